@@ -1,0 +1,73 @@
+/* arena.c: chained blocks and a bump pointer. Grammar actions allocate here and never
+ * free, so error recovery cannot leak. */
+#include "arena.h"
+
+#include <stdalign.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "xalloc.h"
+
+enum { BLOCK_SIZE = 64 * 1024 };
+
+struct block {
+	struct block *next;
+	size_t used, size;
+	alignas(max_align_t) unsigned char data[];
+};
+
+struct arena {
+	struct block *head;
+};
+
+struct arena *arena_new(void)
+{
+	return xcalloc(1, sizeof(struct arena));
+}
+
+void arena_free(struct arena *a)
+{
+	if (!a)
+		return;
+	for (struct block *b = a->head, *next; b; b = next) {
+		next = b->next;
+		free(b);
+	}
+	free(a);
+}
+
+void *arena_alloc(struct arena *a, size_t size)
+{
+	const size_t align = alignof(max_align_t);
+	size = (size + align - 1) & ~(align - 1);
+	struct block *b = a->head;
+	if (!b || b->size - b->used < size) {
+		/* Big requests get a block of their own, so a block wastes at most its tail. */
+		size_t cap = size > BLOCK_SIZE / 4 ? size : BLOCK_SIZE;
+		if (cap > SIZE_MAX - sizeof *b)
+			cap = SIZE_MAX - sizeof *b; /* xmalloc then fails cleanly */
+		b = xmalloc(sizeof *b + cap);
+		b->used = 0;
+		b->size = cap;
+		if (a->head && cap != BLOCK_SIZE) {
+			/* keep the current block's free space for the next small request */
+			b->next = a->head->next;
+			a->head->next = b;
+		} else {
+			b->next = a->head;
+			a->head = b;
+		}
+	}
+	void *p = b->data + b->used;
+	b->used += size;
+	return memset(p, 0, size);
+}
+
+char *arena_strndup(struct arena *a, const char *s, size_t n)
+{
+	char *p = arena_alloc(a, n + 1);
+	memcpy(p, s, n);
+	p[n] = '\0';
+	return p;
+}

@@ -1,0 +1,15 @@
+/* arena.h: bump allocator for everything the front end makes; one arena_free releases it all. */
+#ifndef SCN_ARENA_H
+#define SCN_ARENA_H
+
+#include <stddef.h>
+
+struct arena;
+
+struct arena *arena_new(void);
+void arena_free(struct arena *a);
+/* Zeroed, aligned for any type; never NULL (exits 4 when memory runs out). */
+void *arena_alloc(struct arena *a, size_t size);
+char *arena_strndup(struct arena *a, const char *s, size_t n);
+
+#endif

@@ -1,0 +1,104 @@
+/* ast.h: the syntax tree of a scene. Every node lives in the parse's arena and keeps
+ * the source span it came from; check.c annotates names and types in place. */
+#ifndef SCN_AST_H
+#define SCN_AST_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "diag.h"
+#include "keywords.h"
+
+struct arena;
+
+enum ast_kind {
+	/* expressions */
+	AST_NUM, AST_STR, AST_VEC, AST_IDENT, AST_NEG, AST_BINARY, AST_CALL, AST_MEMBER,
+	AST_ERROR,  /* stands for an expression already reported as wrong */
+	/* statements */
+	AST_LET, AST_INCLUDE, AST_FOR,
+	AST_BLOCK_STMT, /* camera, light, material NAME, sphere, ..., samples { }, samples N, max_depth N */
+	/* parts of a block */
+	AST_ITEM,
+};
+
+/* Static type of an expression, set by check.c. */
+enum ast_type { TYPE_NONE, TYPE_NUM, TYPE_VEC, TYPE_STR, TYPE_PIGMENT, TYPE_MATERIAL };
+
+struct ast_list {
+	struct ast **v;
+	size_t n, cap;
+};
+
+/* { ARGS ITEMS }: positional arguments, then attribute items. */
+struct ast_block {
+	struct ast_list args;
+	struct ast_list items;
+	struct span open;      /* the '{' */
+};
+
+struct binding;
+
+struct ast {
+	enum ast_kind kind;
+	struct span span;
+	unsigned depth;        /* expression nesting, bounded by LANG_MAX_NESTING */
+	enum ast_type type;    /* check.c: type of an expression */
+	bool reported;         /* eval.c: an error here was reported once already */
+	union {
+		double num;
+		struct { char *text; size_t len; } str;
+		struct ast *vec[3];
+		struct { char *name; struct binding *ref; int builtin; } ident;
+		struct { char op; struct ast *l, *r; } bin;   /* AST_NEG uses l */
+		struct { char *name; struct span name_span; struct ast_list args; int fn; } call;
+		struct { struct ast *e; int comp; struct span comp_span; char *name; } member;
+		struct { char *name; struct span name_span; struct ast *value; struct binding *b; } let;
+		struct { char *path; struct span path_span; struct ast_list body; bool loaded; } include;
+		struct { char *var; struct span var_span; struct ast *from, *to;
+		         struct ast_list body; struct binding *b; } loop;
+		struct {
+			enum kw kw;            /* which statement */
+			struct span kw_span;
+			char *name;            /* material NAME */
+			struct span name_span;
+			struct ast_block *block;
+			struct ast *value;     /* samples N, max_depth N */
+			struct binding *b;     /* material NAME: its binding */
+		} stmt;
+		struct {
+			int kw;                /* the attribute, or -1 for an unknown name */
+			char *name;
+			struct span name_span;
+			struct ast_list args;
+			struct ast_block *block;
+		} item;
+	} u;
+};
+
+/* Expressions nest at most this deep (brackets, operators and blocks alike). */
+#define LANG_MAX_NESTING 1000
+
+void ast_list_push(struct arena *a, struct ast_list *l, struct ast *node);
+
+struct ast *ast_new(struct arena *a, enum ast_kind kind, struct span sp);
+struct ast *ast_num(struct arena *a, struct span sp, double v);
+struct ast *ast_str(struct arena *a, struct span sp, char *text, size_t len);
+struct ast *ast_vec(struct arena *a, struct span sp, struct ast *x, struct ast *y, struct ast *z);
+struct ast *ast_ident(struct arena *a, struct span sp, char *name);
+struct ast *ast_neg(struct arena *a, struct span sp, struct ast *e);
+struct ast *ast_binary(struct arena *a, struct span sp, char op, struct ast *l, struct ast *r);
+struct ast *ast_call(struct arena *a, struct span sp, char *name, struct span name_span,
+                     struct ast_list args);
+struct ast *ast_member(struct arena *a, struct span sp, struct ast *e, char *name, struct span comp_span);
+struct ast *ast_let(struct arena *a, struct span sp, char *name, struct span name_span, struct ast *value);
+struct ast *ast_include(struct arena *a, struct span sp, char *path, struct span path_span);
+struct ast *ast_for(struct arena *a, struct span sp, char *var, struct span var_span,
+                    struct ast *from, struct ast *to, struct ast_list body);
+struct ast *ast_block_stmt(struct arena *a, struct span sp, enum kw kw, struct span kw_span,
+                           struct ast_block *block, struct ast *value);
+struct ast *ast_item(struct arena *a, struct span sp, int kw, char *name, struct span name_span,
+                     struct ast_list args, struct ast_block *block);
+struct ast_block *ast_block(struct arena *a, struct span open, struct ast_list args, struct ast_list items);
+
+#endif

@@ -1,0 +1,915 @@
+/* check.c: static checks of a scene, before anything is evaluated: every name resolves
+ * (with "did you mean" when it does not), every expression has a type, every attribute
+ * belongs to its block and has the right shape, camera-like statements appear once and
+ * outside loops, includes are read, parsed and checked in place. The checks are static so
+ * that a mistake in a loop body is found whether or not the loop runs. */
+#include "check.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "arena.h"
+#include "builtins.h"
+#include "lang.h"
+#include "scene_desc.h"
+#include "xalloc.h"
+
+/* ---- the symbol table: one chain of bindings per name, innermost first ---- */
+
+struct name_entry {
+	const char *name;
+	struct binding *top;
+	struct name_entry *next;
+};
+
+struct checker {
+	struct arena *arena;
+	struct diag *diag;
+	struct name_entry **buckets;
+	size_t nbuckets, nentries;
+	unsigned scope;            /* depth of the current scope; the file scope is 1 */
+	struct binding *scope_bindings[LANG_MAX_NESTING + 2];
+	unsigned nslots;
+	unsigned loop_depth;
+	int include_depth;
+	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
+	struct ast *once[KW_COUNT_ALL]; /* camera, skybox, samples, max_depth seen so far */
+};
+
+static size_t hash_name(const char *s)
+{
+	size_t h = 5381;
+	while (*s)
+		h = h * 33 + (unsigned char)*s++;
+	return h;
+}
+
+static struct name_entry *entry_for(struct checker *c, const char *name, bool create)
+{
+	struct name_entry **slot = &c->buckets[hash_name(name) & (c->nbuckets - 1)];
+	for (struct name_entry *e = *slot; e; e = e->next)
+		if (strcmp(e->name, name) == 0)
+			return e;
+	if (!create)
+		return NULL;
+	if (c->nentries >= 2 * c->nbuckets) {
+		size_t n = c->nbuckets * 4;
+		struct name_entry **b = xcalloc(n, sizeof *b);
+		for (size_t i = 0; i < c->nbuckets; i++)
+			for (struct name_entry *e = c->buckets[i], *next; e; e = next) {
+				next = e->next;
+				size_t h = hash_name(e->name) & (n - 1);
+				e->next = b[h];
+				b[h] = e;
+			}
+		free(c->buckets);
+		c->buckets = b;
+		c->nbuckets = n;
+		slot = &c->buckets[hash_name(name) & (n - 1)];
+	}
+	struct name_entry *e = arena_alloc(c->arena, sizeof *e);
+	e->name = name;
+	e->next = *slot;
+	*slot = e;
+	c->nentries++;
+	return e;
+}
+
+static struct binding *lookup(struct checker *c, const char *name)
+{
+	struct name_entry *e = entry_for(c, name, false);
+	return e ? e->top : NULL;
+}
+
+/* Edit distance, for "did you mean"; gives up (returns limit + 1) beyond limit. */
+static unsigned edit_distance(const char *a, const char *b, unsigned limit)
+{
+	size_t la = strlen(a), lb = strlen(b);
+	if (la > 64 || lb > 64 || (la > lb ? la - lb : lb - la) > limit)
+		return limit + 1;
+	unsigned row[65];
+	for (size_t j = 0; j <= lb; j++)
+		row[j] = (unsigned)j;
+	for (size_t i = 1; i <= la; i++) {
+		unsigned diag = row[0];
+		row[0] = (unsigned)i;
+		for (size_t j = 1; j <= lb; j++) {
+			unsigned up = row[j];
+			unsigned best = diag + (a[i - 1] != b[j - 1]);
+			if (up + 1 < best)
+				best = up + 1;
+			if (row[j - 1] + 1 < best)
+				best = row[j - 1] + 1;
+			row[j] = best;
+			diag = up;
+		}
+	}
+	return row[lb];
+}
+
+/* Keeps the closest candidate to name seen so far. */
+struct suggestion {
+	const char *name;
+	const char *best;
+	unsigned dist;
+};
+
+static void suggest_init(struct suggestion *s, const char *name)
+{
+	size_t len = strlen(name);
+	s->name = name;
+	s->best = NULL;
+	s->dist = len <= 3 ? 1 : len <= 7 ? 2 : 3; /* the most edits still worth suggesting */
+	s->dist++;
+}
+
+static void suggest_consider(struct suggestion *s, const char *candidate)
+{
+	unsigned d = edit_distance(s->name, candidate, s->dist - 1);
+	if (d < s->dist) {
+		s->dist = d;
+		s->best = candidate;
+	}
+}
+
+/* "; did you mean 'x'?" or "" */
+static const char *suggest_text(const struct suggestion *s, char *buf, size_t size)
+{
+	if (!s->best)
+		return "";
+	snprintf(buf, size, "; did you mean '%s'?", s->best);
+	return buf;
+}
+
+/* Visible names of the given kind (values include loop variables and the builtins). */
+static void suggest_visible(struct checker *c, struct suggestion *s, bool materials)
+{
+	for (size_t i = 0; i < c->nbuckets; i++)
+		for (struct name_entry *e = c->buckets[i]; e; e = e->next)
+			if (e->top && (e->top->kind == BIND_MATERIAL) == materials)
+				suggest_consider(s, e->name);
+	if (!materials)
+		for (int b = 0; b < BUILTIN_COUNT; b++)
+			suggest_consider(s, builtin_name(b));
+}
+
+static void push_scope(struct checker *c)
+{
+	c->scope_bindings[++c->scope] = NULL;
+}
+
+/* Leaves a scope: warns about what it bound and never used, and unhides what it hid. */
+static void pop_scope(struct checker *c)
+{
+	for (struct binding *b = c->scope_bindings[c->scope]; b; b = b->scope_next) {
+		if (!b->used && b->kind != BIND_LOOP)
+			diag_warning(c->diag, b->span, b->kind == BIND_MATERIAL ? "material '%s' is never used"
+			                                                         : "'%s' is never used", b->name);
+		b->entry->top = b->shadowed;
+	}
+	c->scope--;
+}
+
+/* Functions are only ever called, so they live apart from bindings: a material may be
+ * called 'floor' (LANGUAGE.md's own example does). A binding may also hide 'pi'. */
+static struct binding *bind(struct checker *c, const char *name, struct span sp, enum binding_kind kind,
+                            enum ast_type type)
+{
+	struct name_entry *e = entry_for(c, name, true);
+	if (e->top && e->top->scope == c->scope) {
+		diag_error(c->diag, sp, "'%s' is already defined in this scope", name);
+		diag_note(c->diag, e->top->span, "'%s' was defined here", name);
+		return NULL;
+	}
+	struct binding *b = arena_alloc(c->arena, sizeof *b);
+	b->name = name;
+	b->span = sp;
+	b->kind = kind;
+	b->type = type;
+	b->slot = c->nslots++;
+	b->scope = c->scope;
+	b->entry = e;
+	b->shadowed = e->top;
+	e->top = b;
+	b->scope_next = c->scope_bindings[c->scope];
+	c->scope_bindings[c->scope] = b;
+	return b;
+}
+
+/* ---- expressions ---- */
+
+static const char *type_name(enum ast_type t)
+{
+	switch (t) {
+	case TYPE_NUM: return "a number";
+	case TYPE_VEC: return "a vector";
+	case TYPE_STR: return "a string";
+	case TYPE_PIGMENT: return "a checker pattern";
+	case TYPE_MATERIAL: return "a material";
+	default: return "nothing";
+	}
+}
+
+static enum ast_type check_expr(struct checker *c, struct ast *e);
+
+/* An operand of arithmetic must be a number or a vector. */
+static bool arithmetic(struct checker *c, struct ast *e, enum ast_type t)
+{
+	if (t == TYPE_NUM || t == TYPE_VEC)
+		return true;
+	if (t != TYPE_NONE)
+		diag_error(c->diag, e->span, "expected a number or a vector, found %s", type_name(t));
+	return false;
+}
+
+static enum ast_type check_ident(struct checker *c, struct ast *e)
+{
+	const char *name = e->u.ident.name;
+	struct binding *b = lookup(c, name);
+	if (b) {
+		b->used = true;
+		e->u.ident.ref = b;
+		if (b->kind == BIND_MATERIAL) {
+			diag_error(c->diag, e->span, "'%s' is a material, not a value", name);
+			return TYPE_NONE;
+		}
+		return b->kind == BIND_LOOP ? TYPE_NUM : b->type;
+	}
+	int fn = builtin_lookup(name);
+	if (fn == CONST_PI) {
+		e->u.ident.builtin = fn;
+		return TYPE_NUM;
+	}
+	if (fn >= 0) {
+		diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
+		return TYPE_NONE;
+	}
+	struct suggestion s;
+	char buf[96];
+	suggest_init(&s, name);
+	suggest_visible(c, &s, false);
+	diag_error(c->diag, e->span, "unknown name '%s'%s", name, suggest_text(&s, buf, sizeof buf));
+	return TYPE_NONE;
+}
+
+static enum ast_type check_call(struct checker *c, struct ast *e)
+{
+	const char *name = e->u.call.name;
+	struct ast_list *args = &e->u.call.args;
+	int fn = builtin_lookup(name);
+	if (fn < 0 || !builtin_is_function(fn)) {
+		struct suggestion s;
+		char buf[96];
+		suggest_init(&s, name);
+		for (int b = 0; b < BUILTIN_COUNT; b++)
+			if (builtin_is_function(b))
+				suggest_consider(&s, builtin_name(b));
+		if (lookup(c, name) || fn >= 0)
+			diag_error(c->diag, e->u.call.name_span, "'%s' is not a function", name);
+		else
+			diag_error(c->diag, e->u.call.name_span, "unknown function '%s'%s", name,
+			           suggest_text(&s, buf, sizeof buf));
+		for (size_t i = 0; i < args->n; i++)
+			check_expr(c, args->v[i]);
+		return TYPE_NONE;
+	}
+	e->u.call.fn = fn;
+	int lo = builtin_min_args(fn), hi = builtin_max_args(fn);
+	int n = (int)args->n;
+	if (n < lo || (hi >= 0 && n > hi)) {
+		if (lo == hi)
+			diag_error(c->diag, e->span, "%s takes %d argument%s, not %d", name, lo, lo == 1 ? "" : "s", n);
+		else
+			diag_error(c->diag, e->span, "%s takes at least %d arguments, not %d", name, lo, n);
+		return TYPE_NONE;
+	}
+	enum ast_type types[64];
+	bool ok = true;
+	for (int i = 0; i < n; i++) {
+		enum ast_type t = check_expr(c, args->v[i]);
+		ok &= arithmetic(c, args->v[i], t);
+		types[i < 64 ? i : 63] = t;
+	}
+	if (!ok)
+		return TYPE_NONE;
+	int bad = -1;
+	const char *why = NULL;
+	enum ast_type t = builtin_type(fn, types, n < 64 ? n : 64, &bad, &why);
+	if (t == TYPE_NONE)
+		diag_error(c->diag, args->v[bad]->span, "%s, found %s", why, type_name(types[bad]));
+	return t;
+}
+
+static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
+{
+	switch (e->kind) {
+	case AST_NUM:
+		return TYPE_NUM;
+	case AST_STR:
+		return TYPE_STR;
+	case AST_ERROR:
+		return TYPE_NONE;
+	case AST_IDENT:
+		return check_ident(c, e);
+	case AST_VEC: {
+		bool ok = true;
+		for (int k = 0; k < 3; k++) {
+			enum ast_type t = check_expr(c, e->u.vec[k]);
+			if (t == TYPE_NONE)
+				ok = false;
+			else if (t != TYPE_NUM) {
+				diag_error(c->diag, e->u.vec[k]->span, "a vector's components must be numbers, found %s",
+				           type_name(t));
+				ok = false;
+			}
+		}
+		return ok ? TYPE_VEC : TYPE_NONE;
+	}
+	case AST_NEG: {
+		enum ast_type t = check_expr(c, e->u.bin.l);
+		return arithmetic(c, e->u.bin.l, t) ? t : TYPE_NONE;
+	}
+	case AST_BINARY: {
+		enum ast_type l = check_expr(c, e->u.bin.l);
+		enum ast_type r = check_expr(c, e->u.bin.r);
+		bool ok = arithmetic(c, e->u.bin.l, l);
+		ok &= arithmetic(c, e->u.bin.r, r);
+		if (!ok)
+			return TYPE_NONE;
+		return l == TYPE_VEC || r == TYPE_VEC ? TYPE_VEC : TYPE_NUM;
+	}
+	case AST_MEMBER: {
+		enum ast_type t = check_expr(c, e->u.member.e);
+		const char *name = e->u.member.name;
+		int comp = strcmp(name, "x") == 0 ? 0 : strcmp(name, "y") == 0 ? 1 : strcmp(name, "z") == 0 ? 2 : -1;
+		if (comp < 0) {
+			diag_error(c->diag, e->u.member.comp_span, "unknown component '.%s'; a vector has .x, .y and .z", name);
+			return TYPE_NONE;
+		}
+		e->u.member.comp = comp;
+		if (t == TYPE_NONE)
+			return TYPE_NONE;
+		if (t != TYPE_VEC) {
+			diag_error(c->diag, e->u.member.e->span, "'.%s' selects from a vector, but this is %s", name,
+			           type_name(t));
+			return TYPE_NONE;
+		}
+		return TYPE_NUM;
+	}
+	case AST_CALL:
+		return check_call(c, e);
+	default:
+		return TYPE_NONE;
+	}
+}
+
+static enum ast_type check_expr(struct checker *c, struct ast *e)
+{
+	return e->type = check_expr_inner(c, e);
+}
+
+/* ---- blocks: which attributes each takes, and their shapes ---- */
+
+enum shape {
+	S_FLAG,       /* no value */
+	S_NUM, S_VEC, /* one expression; a number is promoted to a vector */
+	S_INT2,       /* two numbers: resolution W, H */
+	S_STR,        /* one string */
+	S_MATERIAL,   /* a material's name, or an inline material { } */
+	S_LIKE,       /* a material's name */
+	S_PATTERN,    /* a sampling pattern's name */
+	S_PIGMENT,    /* a colour or checker(...) */
+	S_LIST,       /* { V, V, ... } */
+};
+
+struct attr_spec {
+	unsigned char kw, shape;
+	bool repeat;               /* transforms: any number, applied in order */
+};
+
+#define TRANSFORMS { KW_TRANSLATE, S_VEC, true }, { KW_ROTATE, S_VEC, true }, { KW_SCALE, S_VEC, true }
+
+static const struct attr_spec camera_attrs[] = {
+	{ KW_LOCATION, S_VEC, false }, { KW_LOOK_AT, S_VEC, false }, { KW_UP, S_VEC, false },
+	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false },
+};
+static const struct attr_spec light_attrs[] = {
+	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },
+	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false },
+};
+static const struct attr_spec material_attrs[] = {
+	{ KW_LIKE, S_LIKE, false }, { KW_DIFFUSE, S_PIGMENT, false }, { KW_SPECULAR, S_VEC, false },
+	{ KW_SHININESS, S_NUM, false }, { KW_REFLECT, S_VEC, false }, { KW_TRANSMIT, S_VEC, false },
+	{ KW_IOR, S_NUM, false }, { KW_FRESNEL, S_FLAG, false }, { KW_EMIT, S_VEC, false },
+};
+static const struct attr_spec shape_attrs[] = {
+	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS,
+};
+static const struct attr_spec mesh_attrs[] = {
+	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_SMOOTH, S_FLAG, false },
+	{ KW_VERTICES, S_LIST, false }, { KW_FACES, S_LIST, false }, { KW_NORMALS, S_LIST, false },
+};
+static const struct attr_spec skybox_attrs[] = {
+	{ KW_COLOR, S_VEC, false }, { KW_ZENITH, S_VEC, false }, { KW_HORIZON, S_VEC, false },
+	{ KW_IMAGE, S_STR, false }, { KW_ROTATE, S_NUM, false }, { KW_INTENSITY, S_NUM, false },
+};
+static const struct attr_spec samples_attrs[] = {
+	{ KW_COUNT, S_NUM, false }, { KW_PATTERN, S_PATTERN, false }, { KW_SEED, S_NUM, false },
+	{ KW_TARGET_ERROR, S_NUM, false },
+};
+
+struct block_spec {
+	const char *what;
+	const struct attr_spec *attrs;
+	size_t nattrs;
+	const char *positional;    /* shapes of the positional arguments, as S_ codes + '0' */
+	const char *signature;     /* how the positional arguments are written, for messages */
+};
+
+#define SPEC(what, attrs, pos, sig) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig }
+static const struct block_spec camera_spec = SPEC("camera", camera_attrs, "", NULL);
+static const struct block_spec light_spec = SPEC("light", light_attrs, "", NULL);
+static const struct block_spec material_spec = SPEC("material", material_attrs, "", NULL);
+static const struct block_spec sphere_spec = SPEC("sphere", shape_attrs, "21", "sphere { CENTER, RADIUS ... }");
+static const struct block_spec plane_spec = SPEC("plane", shape_attrs, "21", "plane { NORMAL, OFFSET ... }");
+static const struct block_spec triangle_spec = SPEC("triangle", shape_attrs, "222", "triangle { A, B, C ... }");
+static const struct block_spec mesh_spec = SPEC("mesh", mesh_attrs, "", NULL);
+static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL);
+static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL);
+
+static const struct attr_spec *find_attr(const struct block_spec *spec, int kw)
+{
+	for (size_t i = 0; i < spec->nattrs; i++)
+		if (spec->attrs[i].kw == kw)
+			return &spec->attrs[i];
+	return NULL;
+}
+
+static const char *item_name(const struct ast *item)
+{
+	return item->u.item.kw >= 0 ? kw_name(item->u.item.kw) : item->u.item.name;
+}
+
+/* Checks one expression against the shape S_NUM or S_VEC (or S_PIGMENT). */
+static void check_value(struct checker *c, struct ast *e, enum shape shape, const char *attr)
+{
+	enum ast_type t = check_expr(c, e);
+	if (t == TYPE_NONE)
+		return;
+	if (t == TYPE_NUM || (t == TYPE_VEC && shape != S_NUM) || (t == TYPE_PIGMENT && shape == S_PIGMENT))
+		return;
+	if (t == TYPE_PIGMENT)
+		diag_error(c->diag, e->span, "checker(...) can only be the value of diffuse");
+	else
+		diag_error(c->diag, e->span, "'%s' takes %s, found %s", attr,
+		           shape == S_NUM ? "a number" : shape == S_STR ? "a string" : "a vector or colour",
+		           type_name(t));
+}
+
+/* A name argument (material, like, pattern): a lone identifier. */
+static struct ast *name_arg(struct checker *c, struct ast *item, const char *what)
+{
+	struct ast_list *args = &item->u.item.args;
+	if (args->n == 1 && args->v[0]->kind == AST_IDENT)
+		return args->v[0];
+	diag_error(c->diag, args->n ? args->v[0]->span : item->u.item.name_span, "'%s' takes the name of %s",
+	           item_name(item), what);
+	return NULL;
+}
+
+static void check_material_ref(struct checker *c, struct ast *id)
+{
+	const char *name = id->u.ident.name;
+	struct binding *b = lookup(c, name);
+	if (b && b->kind == BIND_MATERIAL) {
+		b->used = true;
+		id->u.ident.ref = b;
+		id->type = TYPE_MATERIAL;
+		return;
+	}
+	if (b) {
+		diag_error(c->diag, id->span, "'%s' is not a material", name);
+		return;
+	}
+	struct suggestion s;
+	char buf[96];
+	suggest_init(&s, name);
+	suggest_visible(c, &s, true);
+	diag_error(c->diag, id->span, "unknown material '%s'%s", name, suggest_text(&s, buf, sizeof buf));
+}
+
+static void check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
+                        struct span where, struct ast *seen[KW_COUNT_ALL]);
+
+static void check_pattern(struct checker *c, struct ast *id)
+{
+	for (int p = 0; p < PATTERN_COUNT; p++)
+		if (strcmp(id->u.ident.name, pattern_name(p)) == 0) {
+			id->u.ident.builtin = p;
+			return;
+		}
+	struct suggestion s;
+	char buf[96];
+	suggest_init(&s, id->u.ident.name);
+	for (int p = 0; p < PATTERN_COUNT; p++)
+		suggest_consider(&s, pattern_name(p));
+	diag_error(c->diag, id->span,
+	           "unknown pattern '%s'%s (patterns: center, grid, random, jittered, poisson)",
+	           id->u.ident.name, suggest_text(&s, buf, sizeof buf));
+}
+
+static void check_item(struct checker *c, struct ast *item, const struct attr_spec *a)
+{
+	struct ast_list *args = &item->u.item.args;
+	const char *name = item_name(item);
+	struct span at = item->u.item.name_span;
+
+	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL) {
+		diag_error(c->diag, item->u.item.block->open, "'%s' takes a value, not a block", name);
+		return;
+	}
+	switch (a->shape) {
+	case S_FLAG:
+		if (args->n)
+			diag_error(c->diag, args->v[0]->span, "'%s' takes no value", name);
+		return;
+	case S_NUM: case S_VEC: case S_PIGMENT: case S_STR:
+		if (args->n == 0) {
+			diag_error(c->diag, at, "'%s' needs a value", name);
+			return;
+		}
+		if (args->n > 1) {
+			diag_error(c->diag, args->v[1]->span, "'%s' takes one value", name);
+			return;
+		}
+		if (a->shape == S_STR) {
+			if (args->v[0]->kind != AST_STR)
+				diag_error(c->diag, args->v[0]->span, "'%s' takes a file name in quotes", name);
+			return;
+		}
+		if (args->v[0]->kind == AST_STR) {
+			diag_error(c->diag, args->v[0]->span, "'%s' takes a value, not a string", name);
+			return;
+		}
+		check_value(c, args->v[0], a->shape, name);
+		return;
+	case S_INT2:
+		if (args->n != 2) {
+			diag_error(c->diag, args->n > 2 ? args->v[2]->span : item->span,
+			           "'%s' takes two numbers: width, height", name);
+			return;
+		}
+		for (int i = 0; i < 2; i++)
+			if (args->v[i]->kind == AST_STR)
+				diag_error(c->diag, args->v[i]->span, "'%s' takes numbers, not a string", name);
+			else
+				check_value(c, args->v[i], S_NUM, name);
+		return;
+	case S_MATERIAL:
+		if (item->u.item.block) {
+			struct ast *seen[KW_COUNT_ALL] = { 0 };
+			check_block(c, &material_spec, item->u.item.block, at, seen);
+			return;
+		}
+		if ((item = name_arg(c, item, "a material, or { ... }")))
+			check_material_ref(c, item);
+		return;
+	case S_LIKE:
+		if ((item = name_arg(c, item, "a material")))
+			check_material_ref(c, item);
+		return;
+	case S_PATTERN:
+		if ((item = name_arg(c, item, "a pattern")))
+			check_pattern(c, item);
+		return;
+	case S_LIST:
+		if (!item->u.item.block) {
+			diag_error(c->diag, args->n ? args->v[0]->span : at, "'%s' takes a list in braces: %s { ... }",
+			           name, name);
+			return;
+		}
+		for (size_t i = 0; i < item->u.item.block->args.n; i++) {
+			struct ast *e = item->u.item.block->args.v[i];
+			if (e->kind == AST_STR)
+				diag_error(c->diag, e->span, "'%s' lists vectors, not strings", name);
+			else
+				check_value(c, e, S_VEC, name);
+		}
+		return;
+	}
+}
+
+/* Checks a block's positional arguments and items; records the first item of each
+ * attribute in seen[] for the statement's own rules. */
+static void check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
+                        struct span where, struct ast *seen[KW_COUNT_ALL])
+{
+	size_t npos = strlen(spec->positional);
+	struct ast_list *args = &block->args;
+	if (spec->signature && args->n != npos) {
+		struct span at = args->n > npos ? args->v[npos]->span : args->n ? args->v[args->n - 1]->span : where;
+		diag_error(c->diag, at, "%s takes %zu value%s before its attributes: %s", spec->what, npos,
+		           npos == 1 ? "" : "s", spec->signature);
+	}
+	for (size_t i = 0; i < args->n && i < npos; i++) {
+		if (args->v[i]->kind == AST_STR)
+			diag_error(c->diag, args->v[i]->span, "%s takes a value here, not a string", spec->what);
+		else
+			check_value(c, args->v[i], spec->positional[i] - '0', spec->what);
+	}
+
+	for (size_t i = 0; i < block->items.n; i++) {
+		struct ast *item = block->items.v[i];
+		const struct attr_spec *a = item->u.item.kw >= 0 ? find_attr(spec, item->u.item.kw) : NULL;
+		if (!a) {
+			struct suggestion s;
+			char buf[96];
+			suggest_init(&s, item_name(item));
+			for (size_t k = 0; k < spec->nattrs; k++)
+				suggest_consider(&s, kw_name(spec->attrs[k].kw));
+			diag_error(c->diag, item->u.item.name_span, "unknown attribute '%s' in %s%s", item_name(item),
+			           spec->what, suggest_text(&s, buf, sizeof buf));
+			continue;
+		}
+		struct ast **first = &seen[a->kw];
+		if (*first && !a->repeat) {
+			diag_error(c->diag, item->u.item.name_span, "'%s' is given twice in %s", item_name(item), spec->what);
+			diag_note(c->diag, (*first)->u.item.name_span, "first given here");
+			continue;
+		}
+		if (!*first)
+			*first = item;
+		if (a->kw == KW_LIKE && i != 0)
+			diag_error(c->diag, item->u.item.name_span, "'like' must come first in a material");
+		check_item(c, item, a);
+	}
+}
+
+/* ---- statements ---- */
+
+static void check_stmts(struct checker *c, struct ast_list *stmts);
+
+static void exclusive(struct checker *c, struct ast *seen[], enum kw a, enum kw b, const char *why)
+{
+	if (seen[a] && seen[b]) {
+		struct ast *later = seen[a]->span.start > seen[b]->span.start ? seen[a] : seen[b];
+		diag_error(c->diag, later->u.item.name_span, "%s", why);
+	}
+}
+
+/* What a statement's attributes must satisfy together. */
+static void check_combination(struct checker *c, struct ast *stmt, struct ast *seen[])
+{
+	struct span at = stmt->u.stmt.kw_span;
+	switch (stmt->u.stmt.kw) {
+	case KW_LIGHT:
+		if (!seen[KW_POSITION] && !seen[KW_DIRECTION])
+			diag_error(c->diag, at, "a light needs a position or a direction");
+		exclusive(c, seen, KW_POSITION, KW_DIRECTION, "a light has a position or a direction, not both");
+		break;
+	case KW_SKYBOX:
+		exclusive(c, seen, KW_COLOR, KW_ZENITH, "a skybox has a color, or a zenith and a horizon, not both");
+		exclusive(c, seen, KW_COLOR, KW_HORIZON, "a skybox has a color, or a zenith and a horizon, not both");
+		exclusive(c, seen, KW_COLOR, KW_IMAGE, "a skybox has a color or an image, not both");
+		exclusive(c, seen, KW_IMAGE, KW_ZENITH, "a skybox has an image, or a zenith and a horizon, not both");
+		exclusive(c, seen, KW_IMAGE, KW_HORIZON, "a skybox has an image, or a zenith and a horizon, not both");
+		if (!seen[KW_COLOR] && !seen[KW_ZENITH] && !seen[KW_HORIZON] && !seen[KW_IMAGE])
+			diag_error(c->diag, at, "a skybox needs a color, a zenith and a horizon, or an image");
+		else if (!seen[KW_IMAGE] && !seen[KW_COLOR] && (!seen[KW_ZENITH] || !seen[KW_HORIZON]))
+			diag_error(c->diag, (seen[KW_ZENITH] ? seen[KW_ZENITH] : seen[KW_HORIZON])->u.item.name_span,
+			           "a skybox gradient needs both a zenith and a horizon");
+		for (enum kw k = KW_ROTATE; k <= KW_INTENSITY; k = k == KW_ROTATE ? KW_INTENSITY : KW_COUNT_ALL)
+			if (seen[k] && !seen[KW_IMAGE])
+				diag_error(c->diag, seen[k]->u.item.name_span, "'%s' applies only to an image skybox", kw_name(k));
+		break;
+	case KW_MESH: {
+		bool file = stmt->u.stmt.block->args.n > 0;
+		if (file && (seen[KW_VERTICES] || seen[KW_FACES] || seen[KW_NORMALS])) {
+			struct ast *x = seen[KW_VERTICES] ? seen[KW_VERTICES] : seen[KW_FACES] ? seen[KW_FACES] : seen[KW_NORMALS];
+			diag_error(c->diag, x->u.item.name_span, "a mesh read from a file takes no '%s'", item_name(x));
+		} else if (!file && (!seen[KW_VERTICES] || !seen[KW_FACES])) {
+			diag_error(c->diag, at, "a mesh needs a file name, or vertices { ... } and faces { ... }");
+		}
+		break;
+	}
+	default:
+		break;
+	}
+}
+
+static void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what)
+{
+	char *path = lang_resolve_path(src->dir, str->u.str.text);
+	FILE *f = fopen(path, "rb");
+	int err = f ? 0 : errno;
+	if (f) {
+		/* opening a directory succeeds; reading it does not */
+		char byte;
+		if (fread(&byte, 1, 1, f) == 0 && ferror(f))
+			err = errno ? errno : EIO;
+		fclose(f);
+	}
+	if (err)
+		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, strerror(err));
+	free(path);
+}
+
+static const struct block_spec *spec_of(enum kw kw)
+{
+	switch (kw) {
+	case KW_CAMERA: return &camera_spec;
+	case KW_LIGHT: return &light_spec;
+	case KW_MATERIAL: return &material_spec;
+	case KW_SPHERE: return &sphere_spec;
+	case KW_PLANE: return &plane_spec;
+	case KW_TRIANGLE: return &triangle_spec;
+	case KW_MESH: return &mesh_spec;
+	case KW_SKYBOX: return &skybox_spec;
+	case KW_SAMPLES: return &samples_spec;
+	default: return NULL;
+	}
+}
+
+static void check_block_stmt(struct checker *c, struct ast *s)
+{
+	enum kw kw = s->u.stmt.kw;
+	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH) {
+		if (c->loop_depth)
+			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a for loop", kw_name(kw));
+		else if (c->once[kw]) {
+			diag_error(c->diag, s->u.stmt.kw_span, "a scene has at most one '%s'", kw_name(kw));
+			diag_note(c->diag, c->once[kw]->u.stmt.kw_span, "the first '%s' is here", kw_name(kw));
+		} else {
+			c->once[kw] = s;
+		}
+	}
+	if (s->u.stmt.value) {   /* samples N, max_depth N */
+		if (s->u.stmt.value->kind != AST_ERROR)
+			check_value(c, s->u.stmt.value, S_NUM, kw_name(kw));
+		return;
+	}
+	struct ast *seen[KW_COUNT_ALL] = { 0 };
+	check_block(c, spec_of(kw), s->u.stmt.block, s->u.stmt.kw_span, seen);
+	check_combination(c, s, seen);
+	const struct source *src = diag_source_at(c->diag, s->span.start);
+	if (kw == KW_MESH && s->u.stmt.block->args.n)
+		check_readable(c, src, s->u.stmt.block->args.v[0], "mesh file");
+	if (kw == KW_SKYBOX && seen[KW_IMAGE] && seen[KW_IMAGE]->u.item.args.n == 1 &&
+	    seen[KW_IMAGE]->u.item.args.v[0]->kind == AST_STR)
+		check_readable(c, src, seen[KW_IMAGE]->u.item.args.v[0], "skybox image");
+	if (kw == KW_MATERIAL)
+		s->u.stmt.b = bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
+}
+
+static void check_include(struct checker *c, struct ast *inc)
+{
+	const struct source *from = diag_source_at(c->diag, inc->span.start);
+	const char *name = inc->u.include.path;
+	struct span at = inc->u.include.path_span;
+	if (c->include_depth >= LANG_MAX_INCLUDE_DEPTH) {
+		diag_error(c->diag, at, "includes nested more than %d deep", LANG_MAX_INCLUDE_DEPTH);
+		return;
+	}
+	char *path = lang_resolve_path(from->dir, name);
+	char *real = realpath(path, NULL);
+	for (int i = 0; real && i <= c->include_depth; i++)
+		if (c->include_stack[i] && strcmp(c->include_stack[i], real) == 0) {
+			diag_error(c->diag, at, "include cycle: '%s' is already being read", name);
+			free(real);
+			free(path);
+			return;
+		}
+	char *text;
+	uint32_t len;
+	int err = lang_read_file(path, &text, &len);
+	if (err) {
+		diag_error(c->diag, at, "cannot read included file '%s': %s", name,
+		           err == EFBIG ? "the scene's files exceed 256 MiB in all" : strerror(err));
+		free(real);
+		free(path);
+		return;
+	}
+	const struct source *src = diag_add_source(c->diag, path, text, len, from, at);
+	free(path);
+	if (!src) {
+		diag_error(c->diag, at, "cannot read included file '%s': the scene's files exceed 256 MiB in all", name);
+		free(real);
+		return;
+	}
+	inc->u.include.body = lang_parse(c->arena, c->diag, src);
+	inc->u.include.loaded = true;
+	c->include_stack[++c->include_depth] = real;
+	check_stmts(c, &inc->u.include.body);
+	c->include_stack[c->include_depth--] = NULL;
+	free(real);
+}
+
+static void check_stmts(struct checker *c, struct ast_list *stmts)
+{
+	for (size_t i = 0; i < stmts->n && !diag_stopped(c->diag); i++) {
+		struct ast *s = stmts->v[i];
+		switch (s->kind) {
+		case AST_LET: {
+			enum ast_type t = check_expr(c, s->u.let.value);
+			if (t == TYPE_STR || t == TYPE_PIGMENT) {
+				diag_error(c->diag, s->u.let.value->span, "a binding holds a number or a vector, not %s",
+				           type_name(t));
+				t = TYPE_NONE;
+			}
+			s->u.let.b = bind(c, s->u.let.name, s->u.let.name_span, BIND_VALUE, t);
+			if (s->u.let.b && t == TYPE_NONE)
+				s->u.let.b->used = true; /* already reported; no "never used" on top */
+			break;
+		}
+		case AST_INCLUDE:
+			check_include(c, s);
+			break;
+		case AST_FOR:
+			check_value(c, s->u.loop.from, S_NUM, "for");
+			check_value(c, s->u.loop.to, S_NUM, "for");
+			if (c->loop_depth == LANG_MAX_NESTING) { /* includes can nest loops past one file's brackets */
+				diag_error(c->diag, s->u.loop.var_span, "for loops nested more than %d deep", LANG_MAX_NESTING);
+				break;
+			}
+			push_scope(c);
+			c->loop_depth++;
+			s->u.loop.b = bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
+			check_stmts(c, &s->u.loop.body);
+			c->loop_depth--;
+			pop_scope(c);
+			break;
+		case AST_BLOCK_STMT:
+			check_block_stmt(c, s);
+			break;
+		default:
+			break;
+		}
+	}
+}
+
+unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts)
+{
+	struct checker *c = xcalloc(1, sizeof *c);
+	c->arena = a;
+	c->diag = d;
+	c->nbuckets = 256;
+	c->buckets = xcalloc(c->nbuckets, sizeof *c->buckets);
+	c->include_stack[0] = realpath(src->path, NULL); /* NULL for standard input */
+	push_scope(c);
+	check_stmts(c, stmts);
+	if (!diag_stopped(d))
+		pop_scope(c);
+	unsigned nslots = c->nslots;
+	free(c->include_stack[0]);
+	free(c->buckets);
+	free(c);
+	return nslots;
+}
+
+int lang_read_file(const char *path, char **text, uint32_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return errno;
+	size_t cap = 1 << 16, n = 0;
+	char *buf = xmalloc(cap);
+	for (;;) {
+		if (n + 1 >= cap) {
+			if (cap >= DIAG_MAX_SOURCE_BYTES) {
+				free(buf);
+				fclose(f);
+				return EFBIG;
+			}
+			cap *= 2;
+			buf = xrealloc(buf, cap);
+		}
+		size_t got = fread(buf + n, 1, cap - n - 1, f);
+		n += got;
+		if (got == 0)
+			break;
+	}
+	int err = ferror(f) ? (errno ? errno : EIO) : 0;
+	fclose(f);
+	if (err) {
+		free(buf);
+		return err;
+	}
+	buf[n] = '\0';
+	*text = buf;
+	*len = (uint32_t)n;
+	return 0;
+}
+
+char *lang_resolve_path(const char *dir, const char *path)
+{
+	if (path[0] == '/' || strcmp(dir, ".") == 0)
+		return xstrdup(path);
+	size_t ld = strlen(dir), lp = strlen(path);
+	char *out = xmalloc(ld + lp + 2);
+	memcpy(out, dir, ld);
+	out[ld] = '/';
+	memcpy(out + ld + 1, path, lp + 1);
+	return out;
+}

@@ -1,0 +1,42 @@
+/* check.h: the static checks of a parsed scene: names and scopes, types, attributes,
+ * statement placement, includes. Annotates the AST in place for eval.c. */
+#ifndef SCN_CHECK_H
+#define SCN_CHECK_H
+
+#include <stdbool.h>
+
+#include "ast.h"
+#include "diag.h"
+
+struct arena;
+
+enum binding_kind { BIND_VALUE, BIND_LOOP, BIND_MATERIAL };
+
+struct binding {
+	const char *name;
+	struct span span;
+	enum binding_kind kind;
+	enum ast_type type;        /* of a value binding */
+	unsigned slot;             /* where eval.c keeps its current value */
+	unsigned scope;
+	bool used;
+	struct binding *shadowed;  /* the outer binding of the same name that this one hides */
+	struct binding *scope_next;
+	struct name_entry *entry;
+};
+
+/* Limits of LANGUAGE.md section 6. */
+#define LANG_MAX_INCLUDE_DEPTH 64
+
+/* Checks the statements of src (already parsed into *stmts), reading and parsing the
+ * files they include. Reports to d; returns the number of value slots eval.c needs. */
+unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts);
+
+/* Reads a whole file into a NUL-terminated malloc'd buffer. Returns 0 or an errno value
+ * (EFBIG when it is larger than DIAG_MAX_SOURCE_BYTES). */
+int lang_read_file(const char *path, char **text, uint32_t *len);
+
+/* Joins path to dir unless path is absolute; malloc'd. */
+char *lang_resolve_path(const char *dir, const char *path);
+
+#endif

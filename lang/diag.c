@@ -1,0 +1,237 @@
+/* diag.c: source registry and diagnostics in GCC's form:
+ *   file:line:col: error: message
+ *      12 | the source line
+ *         |      ^~~~
+ * Columns count bytes; the caret line pads by characters so that it stays under the
+ * span on a terminal, copying tabs from the source. */
+#include "diag.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "xalloc.h"
+
+/* Lines longer than this are shown as a window around the span. */
+enum { LINE_WINDOW = 160, WINDOW_LEAD = 60 };
+
+static const char *const level_names[] = { "error", "warning", "note" };
+
+void diag_init(struct diag *d, FILE *out)
+{
+	memset(d, 0, sizeof *d);
+	d->out = out;
+	d->max_errors = 20;
+}
+
+void diag_fini(struct diag *d)
+{
+	for (size_t i = 0; i < d->nfiles; i++) {
+		struct source *s = d->files[i];
+		free(s->path);
+		free(s->dir);
+		free(s->text);
+		free(s->lines);
+		free(s);
+	}
+	free(d->files);
+	memset(d, 0, sizeof *d);
+}
+
+static char *dir_of(const char *path)
+{
+	const char *slash = strrchr(path, '/');
+	if (!slash)
+		return xstrdup(".");
+	size_t n = slash == path ? 1 : (size_t)(slash - path); /* "/x" lives in "/" */
+	char *dir = xmalloc(n + 1);
+	memcpy(dir, path, n);
+	dir[n] = '\0';
+	return dir;
+}
+
+struct source *diag_add_source(struct diag *d, const char *path, char *text, uint32_t len,
+                               const struct source *includer, struct span include_site)
+{
+	/* +1 keeps an offset for end of file even in an empty file */
+	if (len >= DIAG_MAX_SOURCE_BYTES - d->next_base) {
+		free(text);
+		return NULL;
+	}
+	struct source *s = xcalloc(1, sizeof *s);
+	s->path = xstrdup(path);
+	s->dir = dir_of(path);
+	s->text = text;
+	s->len = len;
+	s->base = d->next_base;
+	s->included = includer != NULL;
+	s->include_site = include_site;
+	d->next_base += len + 1;
+	xgrow((void **)&d->files, &d->cap, d->nfiles + 1, sizeof *d->files);
+	d->files[d->nfiles++] = s;
+	return s;
+}
+
+const struct source *diag_source_at(const struct diag *d, uint32_t off)
+{
+	/* files are registered in increasing base order */
+	size_t lo = 0, hi = d->nfiles;
+	while (hi - lo > 1) {
+		size_t mid = (lo + hi) / 2;
+		if (d->files[mid]->base <= off)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return d->nfiles ? d->files[lo] : NULL;
+}
+
+static void index_lines(struct source *s)
+{
+	size_t cap = 0, n = 0;
+	uint32_t *lines = NULL;
+	xgrow((void **)&lines, &cap, 1, sizeof *lines);
+	lines[n++] = 0;
+	for (uint32_t i = 0; i < s->len; i++)
+		if (s->text[i] == '\n') {
+			xgrow((void **)&lines, &cap, n + 1, sizeof *lines);
+			lines[n++] = i + 1;
+		}
+	s->lines = lines;
+	s->nlines = (uint32_t)n;
+}
+
+/* Index (0-based) of the line holding local offset off. */
+static uint32_t line_index(struct source *s, uint32_t off)
+{
+	if (!s->lines)
+		index_lines(s);
+	uint32_t lo = 0, hi = s->nlines;
+	while (hi - lo > 1) {
+		uint32_t mid = lo + (hi - lo) / 2;
+		if (s->lines[mid] <= off)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+void diag_line_col(const struct diag *d, uint32_t off, unsigned *line, unsigned *col)
+{
+	struct source *s = (struct source *)diag_source_at(d, off);
+	uint32_t local = off - s->base;
+	if (local > s->len)
+		local = s->len;
+	uint32_t li = line_index(s, local);
+	*line = li + 1;
+	*col = local - s->lines[li] + 1;
+}
+
+/* Writes text[from, to) for the quoted line: control bytes become '?' so that hostile
+ * input cannot drive the terminal. */
+static void put_source_text(FILE *out, const char *text, uint32_t from, uint32_t to)
+{
+	for (uint32_t i = from; i < to; i++) {
+		unsigned char c = (unsigned char)text[i];
+		fputc((c < 0x20 && c != '\t') || c == 0x7f ? '?' : c, out);
+	}
+}
+
+/* Pads the caret line under text[from, to): one space per character, tabs kept. */
+static void put_padding(FILE *out, const char *text, uint32_t from, uint32_t to)
+{
+	for (uint32_t i = from; i < to; i++) {
+		unsigned char c = (unsigned char)text[i];
+		if (c == '\t')
+			fputc('\t', out);
+		else if ((c & 0xc0) != 0x80) /* not a UTF-8 continuation byte */
+			fputc(' ', out);
+	}
+}
+
+static void quote_line(struct diag *d, struct source *s, uint32_t start, uint32_t end, unsigned line)
+{
+	uint32_t li = line - 1;
+	uint32_t ls = s->lines[li];
+	uint32_t le = li + 1 < s->nlines ? s->lines[li + 1] - 1 : s->len;
+	if (le > ls && s->text[le - 1] == '\r')
+		le--;
+	if (end > le)
+		end = le;
+	if (end <= start)
+		end = start + 1; /* a caret even at end of line or file */
+
+	uint32_t ws = ls, we = le;
+	if (le - ls > LINE_WINDOW) {
+		ws = start > ls + WINDOW_LEAD ? start - WINDOW_LEAD : ls;
+		we = ws + LINE_WINDOW < le ? ws + LINE_WINDOW : le;
+		if (end > we)
+			end = we > start ? we : start + 1;
+	}
+	fprintf(d->out, "%5u | %s", line, ws > ls ? "..." : "");
+	put_source_text(d->out, s->text, ws, we);
+	fprintf(d->out, "%s\n      | %s", we < le ? "..." : "", ws > ls ? "   " : "");
+	put_padding(d->out, s->text, ws, start);
+	fputc('^', d->out);
+	for (uint32_t i = start + 1; i < end; i++)
+		if (((unsigned char)s->text[i] & 0xc0) != 0x80)
+			fputc('~', d->out);
+	fputc('\n', d->out);
+}
+
+/* Whether to print a diagnostic: notes follow the fate of the message they annotate;
+ * the error after the last one allowed stops the run, once. */
+static bool admit(struct diag *d, enum diag_level level)
+{
+	if (level == DIAG_NOTE)
+		return !d->dropped;
+	d->dropped = d->stopped;
+	if (d->stopped)
+		return false;
+	if (level == DIAG_ERROR && d->errors == d->max_errors) {
+		d->stopped = d->dropped = true;
+		fprintf(d->out, "scn: too many errors (more than %d), stopping\n", d->max_errors);
+		return false;
+	}
+	if (level == DIAG_ERROR)
+		d->errors++;
+	else
+		d->warnings++;
+	return true;
+}
+
+void diag_report(struct diag *d, enum diag_level level, struct span sp, const char *fmt, ...)
+{
+	if (!admit(d, level))
+		return;
+	struct source *s = (struct source *)diag_source_at(d, sp.start);
+	if (level != DIAG_NOTE)
+		for (const struct source *inc = s; inc && inc->included;) {
+			unsigned l, c;
+			diag_line_col(d, inc->include_site.start, &l, &c);
+			inc = diag_source_at(d, inc->include_site.start);
+			fprintf(d->out, "In file included from %s:%u:%u:\n", inc->path, l, c);
+		}
+	unsigned line, col;
+	diag_line_col(d, sp.start, &line, &col);
+	fprintf(d->out, "%s:%u:%u: %s: ", s->path, line, col, level_names[level]);
+	va_list ap;
+	va_start(ap, fmt);
+	vfprintf(d->out, fmt, ap);
+	va_end(ap);
+	fputc('\n', d->out);
+	quote_line(d, s, sp.start - s->base, sp.end - s->base, line);
+}
+
+void diag_plain(struct diag *d, enum diag_level level, const char *fmt, ...)
+{
+	if (!admit(d, level))
+		return;
+	fprintf(d->out, "scn: %s: ", level_names[level]);
+	va_list ap;
+	va_start(ap, fmt);
+	vfprintf(d->out, fmt, ap);
+	va_end(ap);
+	fputc('\n', d->out);
+}

@@ -1,0 +1,18 @@
+/* eval.h: evaluation of a checked scene into a scene_desc. */
+#ifndef SCN_EVAL_H
+#define SCN_EVAL_H
+
+#include "ast.h"
+#include "diag.h"
+#include "scene_desc.h"
+
+/* Limits of LANGUAGE.md section 6. */
+#define LANG_MAX_ITERATIONS 10000000
+#define LANG_MAX_DEPTH 256
+#define LANG_MAX_PIXELS (1 << 28)
+
+/* Evaluates statements that lang_check accepted without errors (nslots is what it
+ * returned) into out, which scene_desc_init prepared. Range errors go to d. */
+void lang_eval(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out);
+
+#endif

@@ -1,0 +1,15 @@
+/* load.h: the front end end to end, for the scn command. */
+#ifndef SCN_LOAD_H
+#define SCN_LOAD_H
+
+#include "diag.h"
+#include "scene_desc.h"
+
+enum load_status { LOAD_OK = 0, LOAD_SCENE_ERROR = 1, LOAD_IO_ERROR = 3 };
+
+/* Reads the scene at path ("-": standard input), with its includes, and evaluates it into
+ * out (always initialised; scene_desc_free it). Diagnostics go to d. The status doubles
+ * as the command's exit status. */
+enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out);
+
+#endif

@@ -1,0 +1,18 @@
+# lang/local.mk: the front end: lexer, parser, AST, checker, evaluator, diagnostics.
+noinst_LIBRARIES += lang/libscnlang.a
+lang_libscnlang_a_SOURCES = \
+	%D%/arena.c %D%/arena.h \
+	%D%/ast.c %D%/ast.h \
+	%D%/diag.c %D%/diag.h \
+	%D%/keywords.c %D%/keywords.h \
+	%D%/lang.h \
+	%D%/lexer.l \
+	%D%/parser.y \
+	%D%/xalloc.c %D%/xalloc.h
+BUILT_SOURCES += %D%/parser.h
+lang_libscnlang_a_SOURCES += \
+	%D%/builtins.c %D%/builtins.h \
+	%D%/check.c %D%/check.h \
+	%D%/eval.c %D%/eval.h \
+	%D%/scene_desc.c %D%/scene_desc.h
+lang_libscnlang_a_SOURCES += %D%/load.c %D%/load.h

@@ -1,0 +1,260 @@
+/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4 and 5) -> AST.
+ * Every statement starts with a keyword. Blocks are generic (positional arguments, then
+ * attribute items) so that check.c, not the grammar, knows which attribute belongs where
+ * and can say "unknown attribute 'radus' in sphere; did you mean 'radius'?". */
+
+%code top {
+#include "config.h"
+}
+
+%code requires {
+#include "ast.h"
+#include "diag.h"
+typedef void *yyscan_t;
+struct lang_ctx;
+}
+
+%code {
+#include <string.h>
+
+#include "arena.h"
+#include "lang.h"
+
+int yylex(YYSTYPE *yylval, YYLTYPE *yylloc, yyscan_t scanner);
+static struct ast *bounded(struct lang_ctx *ctx, struct ast *e);
+static struct ast_list list1(struct lang_ctx *ctx, struct ast *e);
+static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct ast *e);
+static const struct ast_list no_list;
+static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const char *msg);
+#define A (ctx->arena)
+}
+
+%define api.pure full                       /* reentrant: no globals */
+%define api.location.type {struct span}     /* byte spans; diag.c finds line and column */
+%define parse.error custom                  /* yyreport_syntax_error below */
+%locations
+%lex-param {yyscan_t scanner}
+%parse-param {yyscan_t scanner} {struct lang_ctx *ctx}
+%expect 0
+
+/* A rule's span runs from its first symbol to its last; an empty rule sits where the
+ * previous symbol ended. */
+%code requires {
+#define YYLLOC_DEFAULT(Cur, Rhs, N) do { \
+	if (N) { (Cur).start = YYRHSLOC(Rhs, 1).start; (Cur).end = YYRHSLOC(Rhs, N).end; } \
+	else { (Cur).start = (Cur).end = YYRHSLOC(Rhs, 0).end; } \
+} while (0)
+}
+
+%union {
+	double num;
+	struct { char *text; size_t len; } str;
+	char *name;
+	int kw;
+	struct ast *node;
+	struct ast_list list;
+	struct ast_block *block;
+}
+
+%token <num> NUMBER "number"
+%token <str> STRING "string"
+%token <name> IDENT "identifier"
+%token <kw> ATTR "attribute name"
+%token <kw> ITEMS_KW "statement keyword"   /* camera light skybox: { ITEMS } */
+%token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle: { ARGS ITEMS } */
+%token <kw> MATERIAL "material" MESH "mesh" SAMPLES "samples" MAX_DEPTH "max_depth"
+%token <kw> LET "let" INCLUDE "include" FOR "for" IN "in"
+%token DOTDOT ".."
+
+%type <node> stmt expr postfix primary arg item
+%type <list> stmts items args opt_args call_args
+%type <block> items_block args_block mesh_block list_block
+
+/* An attribute followed by an identifier takes it as its value (`material glass`,
+ * `pattern grid`) rather than ending with no value: shift, by this precedence. */
+%precedence NO_ARGS
+%precedence IDENT
+%left '+' '-'
+%left '*' '/'
+%precedence NEG
+
+%%
+
+scene:
+	stmts                               { ctx->stmts = $1; }
+;
+stmts:
+	%empty                              { $$ = no_list; }
+|	stmts stmt                          { $$ = append(ctx, $1, $2); }
+;
+stmt:
+	LET IDENT '=' expr                  { $$ = ast_let(A, @$, $2, @2, $4); }
+|	INCLUDE STRING                      { $$ = ast_include(A, @$, $2.text, @2); }
+|	FOR IDENT IN expr DOTDOT expr '{' stmts '}'
+	                                    { $$ = ast_for(A, @$, $2, @2, $4, $6, $8); }
+|	MATERIAL IDENT items_block          { $$ = ast_block_stmt(A, @$, $1, @1, $3, NULL);
+	                                      $$->u.stmt.name = $2; $$->u.stmt.name_span = @2; }
+|	ITEMS_KW items_block                { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	ARGS_KW args_block                  { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	MESH mesh_block                     { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	SAMPLES items_block                 { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	SAMPLES expr                        { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
+|	MAX_DEPTH expr                      { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
+|	error                               { $$ = NULL; }
+;
+
+/* Recovery: an error inside braces skips to the closing brace. */
+items_block:
+	'{' items '}'                       { $$ = ast_block(A, @1, no_list, $2); }
+|	'{' error '}'                       { $$ = ast_block(A, @1, no_list, no_list); yyerrok; }
+;
+args_block:
+	'{' args items '}'                  { $$ = ast_block(A, @1, $2, $3); }
+|	'{' error '}'                       { $$ = ast_block(A, @1, no_list, no_list); yyerrok; }
+;
+mesh_block:
+	items_block
+|	'{' STRING items '}'                { $$ = ast_block(A, @1, list1(ctx, ast_str(A, @2, $2.text, $2.len)), $3); }
+;
+list_block:
+	'{' args '}'                        { $$ = ast_block(A, @1, $2, no_list); }
+|	'{' error '}'                       { $$ = ast_block(A, @1, no_list, no_list); yyerrok; }
+;
+
+items:
+	%empty                              { $$ = no_list; }
+|	items item                          { $$ = append(ctx, $1, $2); }
+;
+item:
+	ATTR opt_args                       { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
+|	ATTR list_block                     { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
+|	MATERIAL opt_args                   { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
+|	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
+|	IDENT opt_args                      { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); }
+;
+opt_args:
+	%empty %prec NO_ARGS                { $$ = no_list; }
+|	args
+;
+args:
+	arg                                 { $$ = list1(ctx, $1); }
+|	args ',' arg                        { $$ = append(ctx, $1, $3); }
+;
+arg:
+	expr
+|	STRING                              { $$ = ast_str(A, @$, $1.text, $1.len); }
+;
+
+expr:
+	expr '+' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '+', $1, $3)); }
+|	expr '-' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '-', $1, $3)); }
+|	expr '*' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '*', $1, $3)); }
+|	expr '/' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '/', $1, $3)); }
+|	'-' expr %prec NEG                  { $$ = bounded(ctx, ast_neg(A, @$, $2)); }
+|	postfix
+;
+postfix:
+	primary
+|	postfix '.' IDENT                   { $$ = bounded(ctx, ast_member(A, @$, $1, $3, @3)); }
+;
+primary:
+	NUMBER                              { $$ = ast_num(A, @$, $1); }
+|	IDENT                               { $$ = ast_ident(A, @$, $1); }
+|	IDENT '(' ')'                       { $$ = ast_call(A, @$, $1, @1, no_list); }
+|	IDENT '(' call_args ')'             { $$ = bounded(ctx, ast_call(A, @$, $1, @1, $3)); }
+|	'(' expr ')'                        { $$ = $2; }
+|	'<' expr ',' expr ',' expr '>'      { $$ = bounded(ctx, ast_vec(A, @$, $2, $4, $6)); }
+;
+call_args:
+	expr                                { $$ = list1(ctx, $1); }
+|	call_args ',' expr                  { $$ = append(ctx, $1, $3); }
+;
+
+%%
+
+static struct ast_list list1(struct lang_ctx *ctx, struct ast *e)
+{
+	struct ast_list l = no_list;
+	ast_list_push(ctx->arena, &l, e);
+	return l;
+}
+
+static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct ast *e)
+{
+	ast_list_push(ctx->arena, &l, e);
+	return l;
+}
+
+/* Long operator chains nest without brackets; evaluation recurses on them, so they
+ * obey the same bound as brackets. */
+static struct ast *bounded(struct lang_ctx *ctx, struct ast *e)
+{
+	if (e->depth <= LANG_MAX_NESTING)
+		return e;
+	diag_error(ctx->diag, e->span, "expression nested more than %d deep", LANG_MAX_NESTING);
+	return ast_new(ctx->arena, AST_ERROR, e->span);
+}
+
+static bool is_statement_start(yysymbol_kind_t k)
+{
+	return k == YYSYMBOL_LET || k == YYSYMBOL_ITEMS_KW || k == YYSYMBOL_ARGS_KW;
+}
+
+/* "unexpected 'x'; expected A, B or C", and a note at the bracket left open when the
+ * parser wanted its closer. */
+static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struct lang_ctx *ctx)
+{
+	(void)scanner;
+	if (ctx->abort)
+		return 0;
+	enum { MAX_LISTED = 5 };
+	yysymbol_kind_t expected[YYNTOKENS];
+	int n = yypcontext_expected_tokens(pc, expected, YYNTOKENS);
+	yysymbol_kind_t got = yypcontext_token(pc);
+	struct span at = *yypcontext_location(pc);
+
+	char what[96];
+	if (got == YYSYMBOL_YYEOF) {
+		snprintf(what, sizeof what, "end of file");
+	} else {
+		const char *text = ctx->src->text + (at.start - ctx->src->base);
+		int len = (int)(at.end - at.start);
+		const char *kind = got == YYSYMBOL_NUMBER ? "number " : got == YYSYMBOL_IDENT ? "identifier "
+		                 : got == YYSYMBOL_STRING ? "string " : "";
+		snprintf(what, sizeof what, "%s'%.*s%s'", kind, len > 40 ? 40 : len, text, len > 40 ? "..." : "");
+	}
+
+	char list[512] = "";
+	size_t used = 0;
+	bool statement = false;
+	for (int i = 0; i < n; i++)
+		statement |= is_statement_start(expected[i]);
+	if (statement) {
+		snprintf(list, sizeof list, "; expected a statement");
+	} else if (n > 0 && n <= MAX_LISTED) {
+		for (int i = 0; i < n && used < sizeof list; i++)
+			used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
+			                         i == 0 ? "; expected " : i == n - 1 ? " or " : ", ",
+			                         yysymbol_name(expected[i]));
+	}
+	diag_error(ctx->diag, at, "unexpected %s%s", what, list);
+
+	if (ctx->nopen > 0) {
+		char open = ctx->open[ctx->nopen - 1].ch;
+		char closer[4] = { '\'', open == '{' ? '}' : open == '(' ? ')' : '>', '\'', '\0' };
+		for (int i = 0; i < n; i++)
+			if (strcmp(yysymbol_name(expected[i]), closer) == 0) {
+				diag_note(ctx->diag, ctx->open[ctx->nopen - 1].sp, "to match this '%c'", open);
+				break;
+			}
+	}
+	return 0;
+}
+
+/* Bison's own failures (its stack is bounded by the nesting limit, so this is only
+ * memory running out). */
+static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const char *msg)
+{
+	(void)scanner;
+	diag_error(ctx->diag, *loc, "%s", msg);
+}

@@ -1,0 +1,119 @@
+/* scene_desc.h: a scene after checking and evaluation: every name resolved, every
+ * expression a number, loops and includes expanded. It owns its memory and outlives the
+ * AST; lowering turns it into the renderer's scene. */
+#ifndef SCN_SCENE_DESC_H
+#define SCN_SCENE_DESC_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "diag.h"
+
+struct camera_desc {
+	double location[3], look_at[3], up[3];
+	double fov;                    /* horizontal, degrees */
+	int width, height;
+	bool given;                    /* false: the defaults of LANGUAGE.md */
+	struct span span;
+};
+
+struct light_desc {
+	bool directional;
+	double vec[3];                 /* position, or the direction the light travels */
+	double color[3];
+	double intensity;
+	bool shadowless;
+	struct span span;
+};
+
+struct material_desc {
+	char *name;                    /* NULL for an inline material */
+	bool checker;
+	double diffuse[3], diffuse2[3], checker_size;
+	double specular[3], shininess, reflect[3], transmit[3], ior, emit[3];
+	bool fresnel;
+	bool used;                     /* some object refers to it */
+	struct span span;
+};
+
+/* An affine map p -> m[.][0..2] p + m[.][3]. */
+struct xform {
+	double m[3][4];
+};
+
+struct mesh_desc {
+	char *file;                    /* as written in the scene, or NULL for inline data */
+	char *path;                    /* file resolved against the scene's directory */
+	double (*vertices)[3];
+	size_t nvertices;
+	uint32_t (*faces)[3];
+	size_t nfaces;
+	double (*normals)[3];          /* one per vertex, or NULL */
+	size_t nnormals;
+	struct span file_span;
+};
+
+enum object_kind { OBJ_SPHERE, OBJ_PLANE, OBJ_TRIANGLE, OBJ_MESH };
+
+struct object_desc {
+	enum object_kind kind;
+	int material;                  /* index into materials; -1 is the default material */
+	int xform;                     /* index into xforms; -1 is the identity */
+	bool smooth;
+	struct span span;
+	union {
+		struct { double center[3], radius; } sphere;
+		struct { double normal[3], offset; } plane;
+		struct { double v[3][3]; } triangle;
+		struct { int index; } mesh;    /* into meshes */
+	} u;
+};
+
+enum skybox_kind { SKY_NONE, SKY_COLOR, SKY_GRADIENT, SKY_IMAGE };
+
+struct skybox_desc {
+	enum skybox_kind kind;
+	double color[3];               /* SKY_COLOR; SKY_GRADIENT: the zenith */
+	double horizon[3];
+	char *image, *image_path;      /* as written, and resolved */
+	double rotate, intensity;
+	struct span span;
+};
+
+enum sample_pattern { PATTERN_CENTER, PATTERN_GRID, PATTERN_RANDOM, PATTERN_JITTERED,
+                      PATTERN_POISSON, PATTERN_COUNT };
+
+struct samples_desc {
+	int count;
+	enum sample_pattern pattern;
+	uint64_t seed;
+	double target_error;           /* 0: not adaptive */
+};
+
+struct scene_desc {
+	struct camera_desc camera;
+	struct skybox_desc skybox;
+	struct samples_desc samples;
+	int max_depth;
+	struct light_desc *lights;
+	size_t nlights, cap_lights;
+	struct material_desc *materials;
+	size_t nmaterials, cap_materials;
+	struct object_desc *objects;
+	size_t nobjects, cap_objects;
+	struct xform *xforms;
+	size_t nxforms, cap_xforms;
+	struct mesh_desc *meshes;
+	size_t nmeshes, cap_meshes;
+};
+
+/* Fills in LANGUAGE.md's defaults for everything a scene may leave out. */
+void scene_desc_init(struct scene_desc *s);
+void scene_desc_free(struct scene_desc *s);
+/* Writes a canonical text form, one line an entity, for golden tests. */
+void scene_desc_dump(const struct scene_desc *s, FILE *out);
+const char *pattern_name(enum sample_pattern p);
+
+#endif

@@ -1,0 +1,12 @@
+# tests/local.mk: `make check`. A .scn test is checked by tests/run-test according to its
+# folder; a .sh test is a script that runs $SCN itself. Each folder lists its own files.
+TEST_EXTENSIONS = .scn .sh
+SCN_LOG_COMPILER = $(SHELL) $(srcdir)/tests/run-test
+SH_LOG_COMPILER = $(SHELL)
+AM_TESTS_ENVIRONMENT = SCN='$(abs_builddir)/scn'; export SCN; \
+	SCN_SRCDIR='$(abs_srcdir)'; export SCN_SRCDIR;
+EXTRA_DIST += tests/run-test tests/lib.sh
+
+include tests/errors/local.mk
+include tests/parse/local.mk
+include tests/cli/local.mk
