@@ -171,3 +171,11 @@ struct ast_block *ast_block(struct arena *a, struct span open, struct ast_list a
 	b->items = items;
 	return b;
 }
+
+struct ast_block *ast_broken_block(struct arena *a, struct span open)
+{
+	struct ast_list none = { 0 };
+	struct ast_block *b = ast_block(a, open, none, none);
+	b->broken = true;
+	return b;
+}

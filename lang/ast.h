@@ -35,6 +35,7 @@ struct ast_block {
 	struct ast_list args;
 	struct ast_list items;
 	struct span open;      /* the '{' */
+	bool broken;           /* a syntax error inside; its content was skipped */
 };
 
 struct binding;
@@ -100,5 +101,7 @@ struct ast *ast_block_stmt(struct arena *a, struct span sp, enum kw kw, struct s
 struct ast *ast_item(struct arena *a, struct span sp, int kw, char *name, struct span name_span,
                      struct ast_list args, struct ast_block *block);
 struct ast_block *ast_block(struct arena *a, struct span open, struct ast_list args, struct ast_list items);
+/* A block whose content error recovery skipped: checked no further. */
+struct ast_block *ast_broken_block(struct arena *a, struct span open);
 
 #endif

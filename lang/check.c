@@ -160,11 +160,13 @@ static void push_scope(struct checker *c)
 	c->scope_bindings[++c->scope] = NULL;
 }
 
-/* Leaves a scope: warns about what it bound and never used, and unhides what it hid. */
+/* Leaves a scope: warns about what it bound and never used, and unhides what it hid.
+ * After an error the warning is left out: the use may be what the error was about, or
+ * in text that recovery skipped. */
 static void pop_scope(struct checker *c)
 {
 	for (struct binding *b = c->scope_bindings[c->scope]; b; b = b->scope_next) {
-		if (!b->used && b->kind != BIND_LOOP)
+		if (!b->used && b->kind != BIND_LOOP && c->diag->errors == 0)
 			diag_warning(c->diag, b->span, b->kind == BIND_MATERIAL ? "material '%s' is never used"
 			                                                         : "'%s' is never used", b->name);
 		b->entry->top = b->shadowed;
@@ -568,6 +570,8 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 				check_value(c, args->v[i], S_NUM, name);
 		return;
 	case S_MATERIAL:
+		if (item->u.item.block && item->u.item.block->broken)
+			return;
 		if (item->u.item.block) {
 			struct ast *seen[KW_COUNT_ALL] = { 0 };
 			check_block(c, &material_spec, item->u.item.block, at, seen);
@@ -585,6 +589,8 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 			check_pattern(c, item);
 		return;
 	case S_LIST:
+		if (item->u.item.block && item->u.item.block->broken)
+			return;
 		if (!item->u.item.block) {
 			diag_error(c->diag, args->n ? args->v[0]->span : at, "'%s' takes a list in braces: %s { ... }",
 			           name, name);
@@ -748,6 +754,11 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 	if (s->u.stmt.value) {   /* samples N, max_depth N */
 		if (s->u.stmt.value->kind != AST_ERROR)
 			check_value(c, s->u.stmt.value, S_NUM, kw_name(kw));
+		return;
+	}
+	if (s->u.stmt.block->broken) { /* a syntax error was reported inside */
+		if (kw == KW_MATERIAL)
+			s->u.stmt.b = bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
 		return;
 	}
 	struct ast *seen[KW_COUNT_ALL] = { 0 };

@@ -26,6 +26,8 @@ void diag_init(struct diag *d, FILE *out)
 
 void diag_fini(struct diag *d)
 {
+	diag_flush(d);
+	free(d->records);
 	for (size_t i = 0; i < d->nfiles; i++) {
 		struct source *s = d->files[i];
 		free(s->path);
@@ -191,7 +193,6 @@ static bool admit(struct diag *d, enum diag_level level)
 		return false;
 	if (level == DIAG_ERROR && d->errors == d->max_errors) {
 		d->stopped = d->dropped = true;
-		fprintf(d->out, "scn: too many errors (more than %d), stopping\n", d->max_errors);
 		return false;
 	}
 	if (level == DIAG_ERROR)
@@ -201,10 +202,88 @@ static bool admit(struct diag *d, enum diag_level level)
 	return true;
 }
 
+/* Starts the record of a new diagnostic at span sp (NULL: no place, sorted first), or
+ * reopens the last one for a note; d->out writes into it until end_record. */
+static FILE *begin_record(struct diag *d, enum diag_level level, const struct span *sp, char **buf, size_t *len)
+{
+	if (level != DIAG_NOTE || d->nrecords == 0) {
+		xgrow((void **)&d->records, &d->cap_records, d->nrecords + 1, sizeof *d->records);
+		struct diag_record *r = &d->records[d->nrecords++];
+		memset(r, 0, sizeof *r);
+		r->seq = d->nrecords;
+		r->text = xstrdup("");
+		if (sp) {
+			unsigned depth = 1;
+			for (const struct source *s = diag_source_at(d, sp->start); s->included;
+			     s = diag_source_at(d, s->include_site.start))
+				depth++;
+			r->key = xcalloc(depth, sizeof *r->key);
+			r->nkey = depth;
+			uint32_t off = sp->start;
+			for (unsigned i = depth; i-- > 0;) {
+				const struct source *s = diag_source_at(d, off);
+				r->key[i] = off - s->base;
+				off = s->include_site.start;
+			}
+		}
+	}
+	FILE *f = open_memstream(buf, len);
+	if (!f) {
+		fprintf(stderr, "scn: out of memory (diagnostics)\n");
+		exit(4);
+	}
+	return f;
+}
+
+/* Closes the stream of begin_record (which sets *buf) and appends its text. */
+static void end_record(struct diag *d, FILE *f, char **buf, size_t *len)
+{
+	if (fclose(f) != 0) {
+		fprintf(stderr, "scn: out of memory (diagnostics)\n");
+		exit(4);
+	}
+	struct diag_record *r = &d->records[d->nrecords - 1];
+	size_t old = strlen(r->text);
+	r->text = xrealloc(r->text, old + *len + 1);
+	memcpy(r->text + old, *buf, *len + 1);
+	free(*buf);
+}
+
+static int by_position(const void *pa, const void *pb)
+{
+	const struct diag_record *a = pa, *b = pb;
+	for (unsigned i = 0; i < a->nkey && i < b->nkey; i++)
+		if (a->key[i] != b->key[i])
+			return a->key[i] < b->key[i] ? -1 : 1;
+	if (a->nkey != b->nkey)
+		return a->nkey < b->nkey ? -1 : 1;
+	return a->seq < b->seq ? -1 : a->seq > b->seq;
+}
+
+void diag_flush(struct diag *d)
+{
+	qsort(d->records, d->nrecords, sizeof *d->records, by_position);
+	for (size_t i = 0; i < d->nrecords; i++) {
+		fputs(d->records[i].text, d->out);
+		free(d->records[i].text);
+		free(d->records[i].key);
+	}
+	d->nrecords = 0;
+	if (d->stopped && !d->stop_told) {
+		fprintf(d->out, "scn: too many errors (more than %d), stopping\n", d->max_errors);
+		d->stop_told = true;
+	}
+	fflush(d->out);
+}
+
 void diag_report(struct diag *d, enum diag_level level, struct span sp, const char *fmt, ...)
 {
 	if (!admit(d, level))
 		return;
+	char *buf;
+	size_t len;
+	FILE *real = d->out;
+	d->out = begin_record(d, level, &sp, &buf, &len);
 	struct source *s = (struct source *)diag_source_at(d, sp.start);
 	if (level != DIAG_NOTE)
 		for (const struct source *inc = s; inc && inc->included;) {
@@ -222,16 +301,22 @@ void diag_report(struct diag *d, enum diag_level level, struct span sp, const ch
 	va_end(ap);
 	fputc('\n', d->out);
 	quote_line(d, s, sp.start - s->base, sp.end - s->base, line);
+	end_record(d, d->out, &buf, &len);
+	d->out = real;
 }
 
 void diag_plain(struct diag *d, enum diag_level level, const char *fmt, ...)
 {
 	if (!admit(d, level))
 		return;
-	fprintf(d->out, "scn: %s: ", level_names[level]);
+	char *buf;
+	size_t len;
+	FILE *f = begin_record(d, level, NULL, &buf, &len);
+	fprintf(f, "scn: %s: ", level_names[level]);
 	va_list ap;
 	va_start(ap, fmt);
-	vfprintf(d->out, fmt, ap);
+	vfprintf(f, fmt, ap);
 	va_end(ap);
-	fputc('\n', d->out);
+	fputc('\n', f);
+	end_record(d, f, &buf, &len);
 }

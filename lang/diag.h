@@ -26,8 +26,18 @@ struct source {
 
 enum diag_level { DIAG_ERROR, DIAG_WARNING, DIAG_NOTE };
 
+/* A diagnostic held back until diag_flush, with the notes that follow it. */
+struct diag_record {
+	uint32_t *key;       /* reading-order position: include sites from the top file, then the offset */
+	unsigned nkey;
+	size_t seq;          /* order of reporting, for ties */
+	char *text;
+};
+
 struct diag {
 	FILE *out;
+	struct diag_record *records;
+	size_t nrecords, cap_records;
 	struct source **files;
 	size_t nfiles, cap;
 	uint32_t next_base;
@@ -35,13 +45,19 @@ struct diag {
 	int max_errors;      /* one error more than this stops the run: diag_stopped() */
 	bool stopped;
 	bool dropped;        /* the last error or warning was not printed, nor are its notes */
+	bool stop_told;      /* the "too many errors" line was printed */
 };
 
 /* Total bytes of source the offset space (all files, includes counted each time) may hold. */
 #define DIAG_MAX_SOURCE_BYTES (256u << 20)
 
 void diag_init(struct diag *d, FILE *out);
+/* Flushes, then releases the sources. */
 void diag_fini(struct diag *d);
+/* Prints the diagnostics reported so far in reading order: by position in the scene,
+ * a position in an included file counting as its include statement's. The phases
+ * (syntax, names, values) report in their own order; the user reads the file's. */
+void diag_flush(struct diag *d);
 
 /* Registers a loaded file; takes ownership of text (malloc'd, len bytes + NUL).
  * Returns the source, or NULL when the total would exceed DIAG_MAX_SOURCE_BYTES

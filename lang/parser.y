@@ -32,6 +32,7 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %define api.pure full                       /* reentrant: no globals */
 %define api.location.type {struct span}     /* byte spans; diag.c finds line and column */
 %define parse.error custom                  /* yyreport_syntax_error below */
+%define parse.lac full                      /* exact "expected" lists despite default reductions */
 %locations
 %lex-param {yyscan_t scanner}
 %parse-param {yyscan_t scanner} {struct lang_ctx *ctx}
@@ -65,6 +66,7 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <kw> MATERIAL "material" MESH "mesh" SAMPLES "samples" MAX_DEPTH "max_depth"
 %token <kw> LET "let" INCLUDE "include" FOR "for" IN "in"
 %token DOTDOT ".."
+%token BAD "invalid character"   /* the lexer has reported it; the parser only recovers */
 
 %type <node> stmt expr postfix primary arg item
 %type <list> stmts items args opt_args call_args
@@ -106,11 +108,11 @@ stmt:
 /* Recovery: an error inside braces skips to the closing brace. */
 items_block:
 	'{' items '}'                       { $$ = ast_block(A, @1, no_list, $2); }
-|	'{' error '}'                       { $$ = ast_block(A, @1, no_list, no_list); yyerrok; }
+|	'{' error '}'                       { $$ = ast_broken_block(A, @1); yyerrok; }
 ;
 args_block:
 	'{' args items '}'                  { $$ = ast_block(A, @1, $2, $3); }
-|	'{' error '}'                       { $$ = ast_block(A, @1, no_list, no_list); yyerrok; }
+|	'{' error '}'                       { $$ = ast_broken_block(A, @1); yyerrok; }
 ;
 mesh_block:
 	items_block
@@ -118,7 +120,7 @@ mesh_block:
 ;
 list_block:
 	'{' args '}'                        { $$ = ast_block(A, @1, $2, no_list); }
-|	'{' error '}'                       { $$ = ast_block(A, @1, no_list, no_list); yyerrok; }
+|	'{' error '}'                       { $$ = ast_broken_block(A, @1); yyerrok; }
 ;
 
 items:
@@ -195,22 +197,37 @@ static struct ast *bounded(struct lang_ctx *ctx, struct ast *e)
 	return ast_new(ctx->arena, AST_ERROR, e->span);
 }
 
-static bool is_statement_start(yysymbol_kind_t k)
+/* How an expected token is named in a message, or NULL to leave it out: the classes
+ * that start a value or an attribute are named once, and operators are left out (an
+ * operator is seldom what is missing). */
+static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 {
-	return k == YYSYMBOL_LET || k == YYSYMBOL_ITEMS_KW || k == YYSYMBOL_ARGS_KW;
+	switch (k) {
+	case YYSYMBOL_NUMBER: return value ? "a value" : "a number";
+	case YYSYMBOL_ATTR: return "an attribute";
+	case YYSYMBOL_IDENT: return value || attribute ? NULL : "a name";
+	case YYSYMBOL_MATERIAL: return attribute ? NULL : "'material'";
+	default: break;
+	}
+	const char *name = yysymbol_name(k);
+	if (strlen(name) == 3 && name[0] == '\'') {
+		if (strchr("+-*/.(<", name[1]))
+			return NULL;
+	}
+	return name;
 }
 
 /* "unexpected 'x'; expected A, B or C", and a note at the bracket left open when the
- * parser wanted its closer. */
+ * parser wanted its closer. A BAD token was reported by the lexer already. */
 static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struct lang_ctx *ctx)
 {
 	(void)scanner;
-	if (ctx->abort)
+	yysymbol_kind_t got = yypcontext_token(pc);
+	if (ctx->abort || got == YYSYMBOL_BAD)
 		return 0;
 	enum { MAX_LISTED = 5 };
 	yysymbol_kind_t expected[YYNTOKENS];
 	int n = yypcontext_expected_tokens(pc, expected, YYNTOKENS);
-	yysymbol_kind_t got = yypcontext_token(pc);
 	struct span at = *yypcontext_location(pc);
 
 	char what[96];
@@ -219,23 +236,35 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 	} else {
 		const char *text = ctx->src->text + (at.start - ctx->src->base);
 		int len = (int)(at.end - at.start);
-		const char *kind = got == YYSYMBOL_NUMBER ? "number " : got == YYSYMBOL_IDENT ? "identifier "
+		const char *kind = got == YYSYMBOL_NUMBER ? "number " : got == YYSYMBOL_IDENT ? "name "
 		                 : got == YYSYMBOL_STRING ? "string " : "";
 		snprintf(what, sizeof what, "%s'%.*s%s'", kind, len > 40 ? 40 : len, text, len > 40 ? "..." : "");
 	}
 
+	bool statement = false, value = false, attribute = false;
+	for (int i = 0; i < n; i++) {
+		statement |= expected[i] == YYSYMBOL_LET;
+		value |= expected[i] == YYSYMBOL_NUMBER;
+		attribute |= expected[i] == YYSYMBOL_ATTR;
+	}
+	const char *names[YYNTOKENS];
+	int m = 0;
+	for (int i = 0; i < n; i++) {
+		const char *name = expected_name(expected[i], value, attribute);
+		bool dup = false;
+		for (int j = 0; j < m && name; j++)
+			dup |= strcmp(names[j], name) == 0;
+		if (name && !dup)
+			names[m++] = name;
+	}
 	char list[512] = "";
-	size_t used = 0;
-	bool statement = false;
-	for (int i = 0; i < n; i++)
-		statement |= is_statement_start(expected[i]);
 	if (statement) {
 		snprintf(list, sizeof list, "; expected a statement");
-	} else if (n > 0 && n <= MAX_LISTED) {
-		for (int i = 0; i < n && used < sizeof list; i++)
+	} else if (m > 0 && m <= MAX_LISTED) {
+		size_t used = 0;
+		for (int i = 0; i < m && used < sizeof list; i++)
 			used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
-			                         i == 0 ? "; expected " : i == n - 1 ? " or " : ", ",
-			                         yysymbol_name(expected[i]));
+			                         i == 0 ? "; expected " : i == m - 1 ? " or " : ", ", names[i]);
 	}
 	diag_error(ctx->diag, at, "unexpected %s%s", what, list);
 
