@@ -191,6 +191,6 @@ const char *builtin_apply(enum builtin b, const struct value *args, const enum a
 		return why;
 	for (int k = 0; k < comps; k++)
 		if (!isfinite(out->v[k]))
-			return "the result is too large";
+			return "the result is too large to be a number";
 	return NULL;
 }

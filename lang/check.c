@@ -9,6 +9,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "arena.h"
 #include "builtins.h"
@@ -34,16 +35,23 @@ struct checker {
 	unsigned nslots;
 	unsigned loop_depth;
 	int include_depth;
+	unsigned nincludes;        /* files read by includes so far, against LANG_MAX_INCLUDES */
 	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
 	struct ast *once[KW_COUNT_ALL]; /* camera, skybox, samples, max_depth seen so far */
 };
 
+/* FNV-1a with a final mix: unlike h * 33 + c, whose collisions a scene can spell
+ * ("az" and "bY" hash alike, so do all 2^k strings of k such pairs), it does not let a
+ * hostile scene put every name in one bucket and make each lookup linear. */
 static size_t hash_name(const char *s)
 {
-	size_t h = 5381;
+	uint64_t h = 0xcbf29ce484222325u;
 	while (*s)
-		h = h * 33 + (unsigned char)*s++;
-	return h;
+		h = (h ^ (unsigned char)*s++) * 0x100000001b3u;
+	h ^= h >> 33;
+	h *= 0xff51afd7ed558ccdu;
+	h ^= h >> 33;
+	return (size_t)h;
 }
 
 static struct name_entry *entry_for(struct checker *c, const char *name, bool create)
@@ -143,7 +151,8 @@ static const char *suggest_text(const struct suggestion *s, char *buf, size_t si
 	return buf;
 }
 
-/* Visible names of the given kind (values include loop variables and the builtins). */
+/* Visible names of the given kind (values include loop variables and pi, but not the
+ * functions: a name used as a value should not be told to become one). */
 static void suggest_visible(struct checker *c, struct suggestion *s, bool materials)
 {
 	for (size_t i = 0; i < c->nbuckets; i++)
@@ -151,8 +160,7 @@ static void suggest_visible(struct checker *c, struct suggestion *s, bool materi
 			if (e->top && (e->top->kind == BIND_MATERIAL) == materials)
 				suggest_consider(s, e->name);
 	if (!materials)
-		for (int b = 0; b < BUILTIN_COUNT; b++)
-			suggest_consider(s, builtin_name(b));
+		suggest_consider(s, builtin_name(CONST_PI));
 }
 
 static void push_scope(struct checker *c)
@@ -251,7 +259,8 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 	struct suggestion s;
 	char buf[96];
 	suggest_init(&s, name);
-	suggest_visible(c, &s, false);
+	if (!diag_stopped(c->diag)) /* the search reads every name: only for a message that prints */
+		suggest_visible(c, &s, false);
 	diag_error(c->diag, e->span, "unknown name '%s'%s", name, suggest_text(&s, buf, sizeof buf));
 	return TYPE_NONE;
 }
@@ -292,7 +301,8 @@ static enum ast_type check_call(struct checker *c, struct ast *e)
 	for (int i = 0; i < n; i++) {
 		enum ast_type t = check_expr(c, args->v[i]);
 		ok &= arithmetic(c, args->v[i], t);
-		types[i < 64 ? i : 63] = t;
+		if (i < 64 || t == TYPE_VEC) /* min, max: the last slot is a vector if any later one is */
+			types[i < 64 ? i : 63] = t;
 	}
 	if (!ok)
 		return TYPE_NONE;
@@ -474,6 +484,10 @@ static void check_value(struct checker *c, struct ast *e, enum shape shape, cons
 static struct ast *name_arg(struct checker *c, struct ast *item, const char *what)
 {
 	struct ast_list *args = &item->u.item.args;
+	if (args->n > 1 && args->v[0]->kind == AST_IDENT) {
+		diag_error(c->diag, args->v[1]->span, "'%s' takes one name", item_name(item));
+		return NULL;
+	}
 	if (args->n == 1 && args->v[0]->kind == AST_IDENT)
 		return args->v[0];
 	diag_error(c->diag, args->n ? args->v[0]->span : item->u.item.name_span, "'%s' takes the name of %s",
@@ -498,11 +512,12 @@ static void check_material_ref(struct checker *c, struct ast *id)
 	struct suggestion s;
 	char buf[96];
 	suggest_init(&s, name);
-	suggest_visible(c, &s, true);
+	if (!diag_stopped(c->diag)) /* the search reads every name: only for a message that prints */
+		suggest_visible(c, &s, true);
 	diag_error(c->diag, id->span, "unknown material '%s'%s", name, suggest_text(&s, buf, sizeof buf));
 }
 
-static void check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
+static bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
                         struct span where, struct ast *seen[KW_COUNT_ALL]);
 
 static void check_pattern(struct checker *c, struct ast *id)
@@ -517,9 +532,11 @@ static void check_pattern(struct checker *c, struct ast *id)
 	suggest_init(&s, id->u.ident.name);
 	for (int p = 0; p < PATTERN_COUNT; p++)
 		suggest_consider(&s, pattern_name(p));
-	diag_error(c->diag, id->span,
-	           "unknown pattern '%s'%s (patterns: center, grid, random, jittered, poisson)",
-	           id->u.ident.name, suggest_text(&s, buf, sizeof buf));
+	if (s.best)
+		diag_error(c->diag, id->span, "unknown pattern '%s'%s", id->u.ident.name, suggest_text(&s, buf, sizeof buf));
+	else
+		diag_error(c->diag, id->span, "unknown pattern '%s'; the patterns are center, grid, random, jittered and poisson",
+		           id->u.ident.name);
 }
 
 static void check_item(struct checker *c, struct ast *item, const struct attr_spec *a)
@@ -608,10 +625,12 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 }
 
 /* Checks a block's positional arguments and items; records the first item of each
- * attribute in seen[] for the statement's own rules. */
-static void check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
+ * attribute in seen[] for the statement's own rules. Returns false when an attribute
+ * was unknown: what the block lacks may then be only misspelt. */
+static bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
                         struct span where, struct ast *seen[KW_COUNT_ALL])
 {
+	bool complete = true;
 	size_t npos = strlen(spec->positional);
 	struct ast_list *args = &block->args;
 	if (spec->signature && args->n != npos) {
@@ -637,6 +656,7 @@ static void check_block(struct checker *c, const struct block_spec *spec, struct
 				suggest_consider(&s, kw_name(spec->attrs[k].kw));
 			diag_error(c->diag, item->u.item.name_span, "unknown attribute '%s' in %s%s", item_name(item),
 			           spec->what, suggest_text(&s, buf, sizeof buf));
+			complete = false;
 			continue;
 		}
 		struct ast **first = &seen[a->kw];
@@ -651,51 +671,60 @@ static void check_block(struct checker *c, const struct block_spec *spec, struct
 			diag_error(c->diag, item->u.item.name_span, "'like' must come first in a material");
 		check_item(c, item, a);
 	}
+	return complete;
 }
 
 /* ---- statements ---- */
 
 static void check_stmts(struct checker *c, struct ast_list *stmts);
 
-static void exclusive(struct checker *c, struct ast *seen[], enum kw a, enum kw b, const char *why)
+/* Items a and b (either may be NULL) exclude each other: reports at the later one.
+ * Returns whether it reported. */
+static bool exclusive(struct checker *c, struct ast *a, struct ast *b, const char *why)
 {
-	if (seen[a] && seen[b]) {
-		struct ast *later = seen[a]->span.start > seen[b]->span.start ? seen[a] : seen[b];
-		diag_error(c->diag, later->u.item.name_span, "%s", why);
-	}
+	if (!a || !b)
+		return false;
+	diag_error(c->diag, (a->span.start > b->span.start ? a : b)->u.item.name_span, "%s", why);
+	return true;
 }
 
-/* What a statement's attributes must satisfy together. */
-static void check_combination(struct checker *c, struct ast *stmt, struct ast *seen[])
+/* What a statement's attributes must satisfy together. When the block had an unknown
+ * attribute (!complete), what it lacks goes unreported: the unknown one may be it, misspelt. */
+static void check_combination(struct checker *c, struct ast *stmt, struct ast *seen[], bool complete)
 {
 	struct span at = stmt->u.stmt.kw_span;
 	switch (stmt->u.stmt.kw) {
 	case KW_LIGHT:
-		if (!seen[KW_POSITION] && !seen[KW_DIRECTION])
+		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");
-		exclusive(c, seen, KW_POSITION, KW_DIRECTION, "a light has a position or a direction, not both");
+		exclusive(c, seen[KW_POSITION], seen[KW_DIRECTION], "a light has a position or a direction, not both");
 		break;
-	case KW_SKYBOX:
-		exclusive(c, seen, KW_COLOR, KW_ZENITH, "a skybox has a color, or a zenith and a horizon, not both");
-		exclusive(c, seen, KW_COLOR, KW_HORIZON, "a skybox has a color, or a zenith and a horizon, not both");
-		exclusive(c, seen, KW_COLOR, KW_IMAGE, "a skybox has a color or an image, not both");
-		exclusive(c, seen, KW_IMAGE, KW_ZENITH, "a skybox has an image, or a zenith and a horizon, not both");
-		exclusive(c, seen, KW_IMAGE, KW_HORIZON, "a skybox has an image, or a zenith and a horizon, not both");
-		if (!seen[KW_COLOR] && !seen[KW_ZENITH] && !seen[KW_HORIZON] && !seen[KW_IMAGE])
-			diag_error(c->diag, at, "a skybox needs a color, a zenith and a horizon, or an image");
-		else if (!seen[KW_IMAGE] && !seen[KW_COLOR] && (!seen[KW_ZENITH] || !seen[KW_HORIZON]))
-			diag_error(c->diag, (seen[KW_ZENITH] ? seen[KW_ZENITH] : seen[KW_HORIZON])->u.item.name_span,
-			           "a skybox gradient needs both a zenith and a horizon");
-		for (enum kw k = KW_ROTATE; k <= KW_INTENSITY; k = k == KW_ROTATE ? KW_INTENSITY : KW_COUNT_ALL)
-			if (seen[k] && !seen[KW_IMAGE])
-				diag_error(c->diag, seen[k]->u.item.name_span, "'%s' applies only to an image skybox", kw_name(k));
+	case KW_SKYBOX: {
+		/* three kinds of sky; one error for the first clash is enough */
+		struct ast *zenith = seen[KW_ZENITH], *horizon = seen[KW_HORIZON];
+		struct ast *gradient = zenith && (!horizon || zenith->span.start < horizon->span.start) ? zenith : horizon;
+		if (!exclusive(c, seen[KW_COLOR], gradient, "a skybox has a color, or a zenith and a horizon, not both") &&
+		    !exclusive(c, seen[KW_COLOR], seen[KW_IMAGE], "a skybox has a color or an image, not both"))
+			exclusive(c, seen[KW_IMAGE], gradient, "a skybox has an image, or a zenith and a horizon, not both");
+		if (!seen[KW_COLOR] && !gradient && !seen[KW_IMAGE]) {
+			if (complete)
+				diag_error(c->diag, at, "a skybox needs a color, a zenith and a horizon, or an image");
+		} else if (!seen[KW_IMAGE] && !seen[KW_COLOR] && (!zenith || !horizon) && complete) {
+			diag_error(c->diag, gradient->u.item.name_span, "a skybox gradient needs both a zenith and a horizon");
+		}
+		static const enum kw image_only[] = { KW_ROTATE, KW_INTENSITY };
+		for (size_t i = 0; i < sizeof image_only / sizeof image_only[0]; i++)
+			if (seen[image_only[i]] && !seen[KW_IMAGE])
+				diag_error(c->diag, seen[image_only[i]]->u.item.name_span,
+				           "'%s' applies only to an image skybox", kw_name(image_only[i]));
 		break;
+	}
 	case KW_MESH: {
 		bool file = stmt->u.stmt.block->args.n > 0;
 		if (file && (seen[KW_VERTICES] || seen[KW_FACES] || seen[KW_NORMALS])) {
 			struct ast *x = seen[KW_VERTICES] ? seen[KW_VERTICES] : seen[KW_FACES] ? seen[KW_FACES] : seen[KW_NORMALS];
 			diag_error(c->diag, x->u.item.name_span, "a mesh read from a file takes no '%s'", item_name(x));
-		} else if (!file && (!seen[KW_VERTICES] || !seen[KW_FACES])) {
+		} else if (!file && (!seen[KW_VERTICES] || !seen[KW_FACES]) && complete) {
 			diag_error(c->diag, at, "a mesh needs a file name, or vertices { ... } and faces { ... }");
 		}
 		break;
@@ -705,11 +734,22 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 	}
 }
 
+/* A pipe (or a socket) named in a scene, say /dev/stdin, could keep the check waiting
+ * forever for a writer: it is refused (a scene on the command line may be one). */
+static const char *not_a_file(const char *path)
+{
+	struct stat st;
+	if (stat(path, &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
+		return "a pipe or a socket, not a file";
+	return NULL;
+}
+
 static void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what)
 {
 	char *path = lang_resolve_path(src->dir, str->u.str.text);
-	FILE *f = fopen(path, "rb");
-	int err = f ? 0 : errno;
+	const char *why = not_a_file(path);
+	FILE *f = why ? NULL : fopen(path, "rb");
+	int err = f || why ? 0 : errno;
 	if (f) {
 		/* opening a directory succeeds; reading it does not */
 		char byte;
@@ -717,8 +757,8 @@ static void check_readable(struct checker *c, const struct source *src, struct a
 			err = errno ? errno : EIO;
 		fclose(f);
 	}
-	if (err)
-		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, strerror(err));
+	if (err || why)
+		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, why ? why : strerror(err));
 	free(path);
 }
 
@@ -762,8 +802,8 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 		return;
 	}
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
-	check_block(c, spec_of(kw), s->u.stmt.block, s->u.stmt.kw_span, seen);
-	check_combination(c, s, seen);
+	bool complete = check_block(c, spec_of(kw), s->u.stmt.block, s->u.stmt.kw_span, seen);
+	check_combination(c, s, seen, complete);
 	const struct source *src = diag_source_at(c->diag, s->span.start);
 	if (kw == KW_MESH && s->u.stmt.block->args.n)
 		check_readable(c, src, s->u.stmt.block->args.v[0], "mesh file");
@@ -783,7 +823,20 @@ static void check_include(struct checker *c, struct ast *inc)
 		diag_error(c->diag, at, "includes nested more than %d deep", LANG_MAX_INCLUDE_DEPTH);
 		return;
 	}
+	/* two includes of the next file in each of 30 files would read 2^30 files */
+	if (c->nincludes >= LANG_MAX_INCLUDES) {
+		if (c->nincludes++ == LANG_MAX_INCLUDES) /* once; the includes after it are skipped */
+			diag_error(c->diag, at, "more than %d files included in all (each include of a file counts)",
+			           LANG_MAX_INCLUDES);
+		return;
+	}
 	char *path = lang_resolve_path(from->dir, name);
+	const char *why = not_a_file(path);
+	if (why) {
+		diag_error(c->diag, at, "cannot read included file '%s': %s", name, why);
+		free(path);
+		return;
+	}
 	char *real = realpath(path, NULL);
 	for (int i = 0; real && i <= c->include_depth; i++)
 		if (c->include_stack[i] && strcmp(c->include_stack[i], real) == 0) {
@@ -794,6 +847,7 @@ static void check_include(struct checker *c, struct ast *inc)
 		}
 	char *text;
 	uint32_t len;
+	c->nincludes++;
 	int err = lang_read_file(path, &text, &len);
 	if (err) {
 		diag_error(c->diag, at, "cannot read included file '%s': %s", name,
@@ -907,6 +961,7 @@ int lang_read_file(const char *path, char **text, uint32_t *len)
 		free(buf);
 		return err;
 	}
+	buf = xrealloc(buf, n + 1); /* many small includes must not hold 64 KiB each */
 	buf[n] = '\0';
 	*text = buf;
 	*len = (uint32_t)n;

@@ -27,6 +27,9 @@ struct binding {
 
 /* Limits of LANGUAGE.md section 6. */
 #define LANG_MAX_INCLUDE_DEPTH 64
+/* Files read by includes in all, a file counting each time it is included (not in
+ * LANGUAGE.md: without it, includes that fan out read exponentially many files). */
+#define LANG_MAX_INCLUDES 10000
 
 /* Checks the statements of src (already parsed into *stmts), reading and parsing the
  * files they include. Reports to d; returns the number of value slots eval.c needs. */

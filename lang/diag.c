@@ -243,6 +243,13 @@ static void end_record(struct diag *d, FILE *f, char **buf, size_t *len)
 		exit(4);
 	}
 	struct diag_record *r = &d->records[d->nrecords - 1];
+	/* A message quotes strings and file names of the scene: their control bytes (an
+	 * escape sequence in an include's name) must not reach the terminal either. */
+	for (size_t i = 0; i < *len; i++) {
+		unsigned char c = (unsigned char)(*buf)[i];
+		if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7f)
+			(*buf)[i] = '?';
+	}
 	size_t old = strlen(r->text);
 	r->text = xrealloc(r->text, old + *len + 1);
 	memcpy(r->text + old, *buf, *len + 1);
@@ -262,7 +269,8 @@ static int by_position(const void *pa, const void *pb)
 
 void diag_flush(struct diag *d)
 {
-	qsort(d->records, d->nrecords, sizeof *d->records, by_position);
+	if (d->nrecords > 1) /* qsort's array must not be NULL, even when empty */
+		qsort(d->records, d->nrecords, sizeof *d->records, by_position);
 	for (size_t i = 0; i < d->nrecords; i++) {
 		fputs(d->records[i].text, d->out);
 		free(d->records[i].text);

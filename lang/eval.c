@@ -22,6 +22,19 @@ struct evaluator {
 	struct { const struct ast *loop; double i; } loops[LANG_MAX_NESTING];
 };
 
+/* A number for a message: the shortest of %.15g to %.17g that reads back as x, so that
+ * a value the user wrote (ior -1.33) shows as written. */
+static const char *num_text(double x, char buf[32])
+{
+	for (int prec = 15; prec < 17; prec++) {
+		snprintf(buf, 32, "%.*g", prec, x);
+		if (strtod(buf, NULL) == x)
+			return buf;
+	}
+	snprintf(buf, 32, "%.17g", x);
+	return buf;
+}
+
 /* Reports an error once per place (*reported), however many loop iterations reach it,
  * with the loop variables' values that led there. */
 static void report_once(struct evaluator *ev, bool *reported, struct span sp, const char *fmt, va_list ap)
@@ -35,10 +48,11 @@ static void report_once(struct evaluator *ev, bool *reported, struct span sp, co
 	if (ev->nloops) {
 		char where[256];
 		size_t used = 0;
+		char nb[32];
 		for (unsigned i = ev->nloops; i-- > 0 && used < sizeof where;)
-			used += (size_t)snprintf(where + used, sizeof where - used, "%s%s = %.17g",
+			used += (size_t)snprintf(where + used, sizeof where - used, "%s%s = %s",
 			                         i + 1 == ev->nloops ? "" : ", ", ev->loops[i].loop->u.loop.var,
-			                         ev->loops[i].i);
+			                         num_text(ev->loops[i].i, nb));
 		diag_note(ev->diag, ev->loops[ev->nloops - 1].loop->u.loop.var_span, "when %s", where);
 	}
 }
@@ -141,20 +155,26 @@ static bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 		return true;
 	}
 	case AST_CALL: {
+		/* min and max take any number of arguments, millions in a big file: more than
+		 * a few go on the heap, not the stack */
 		size_t n = e->u.call.args.n;
-		struct value args[n ? n : 1];
-		enum ast_type types[n ? n : 1];
-		for (size_t i = 0; i < n; i++) {
-			if (!eval_expr(ev, e->u.call.args.v[i], &args[i]))
-				return false;
+		struct value small_args[4] = { 0 };
+		enum ast_type small_types[4] = { 0 };
+		struct value *args = n <= 4 ? small_args : xcalloc(n, sizeof *args);
+		enum ast_type *types = n <= 4 ? small_types : xcalloc(n, sizeof *types);
+		bool ok = true;
+		for (size_t i = 0; i < n && ok; i++) {
+			ok = eval_expr(ev, e->u.call.args.v[i], &args[i]);
 			types[i] = e->u.call.args.v[i]->type;
 		}
-		const char *why = builtin_apply(e->u.call.fn, args, types, (int)n, e->type, out);
-		if (why) {
-			eval_error(ev, e, "%s", why);
-			return false;
+		const char *why = ok ? builtin_apply(e->u.call.fn, args, types, (int)n, e->type, out) : NULL;
+		if (n > 4) {
+			free(args);
+			free(types);
 		}
-		return true;
+		if (why)
+			eval_error(ev, e, "%s", why);
+		return ok && !why;
 	}
 	default:
 		return false;
@@ -181,13 +201,23 @@ static bool num_of(struct evaluator *ev, struct ast *e, double *out)
 	return true;
 }
 
+/* A bound of whole_of for a message: 2^53, the end of exact whole numbers, by name. */
+static const char *bound_text(double x, char buf[32])
+{
+	if (fabs(x) == 9007199254740992.0)
+		return x < 0 ? "-2^53" : "2^53";
+	return num_text(x, buf);
+}
+
 /* A whole number in [lo, hi]; what names it in the message. */
 static bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const char *what, double *out)
 {
 	if (!num_of(ev, e, out))
 		return false;
 	if (*out != floor(*out) || *out < lo || *out > hi) {
-		eval_error(ev, e, "%s must be a whole number from %.17g to %.17g, not %.17g", what, lo, hi, *out);
+		char lo_buf[32], hi_buf[32], nb[32];
+		eval_error(ev, e, "%s must be a whole number from %s to %s, not %s", what, bound_text(lo, lo_buf),
+		           bound_text(hi, hi_buf), num_text(*out, nb));
 		return false;
 	}
 	return true;
@@ -221,6 +251,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 {
 	struct camera_desc *c = &ev->out->camera;
 	struct ast *at_look = NULL, *at_up = NULL, *at_loc = NULL;
+	char nb[32];
 	c->given = true;
 	c->span = s->u.stmt.kw_span;
 	struct ast_list *items = &s->u.stmt.block->items;
@@ -233,10 +264,12 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		case KW_UP: at_up = it; vec_of(ev, arg0(it), c->up); break;
 		case KW_FOV:
 			if (num_of(ev, arg0(it), &c->fov) && !(c->fov > 0 && c->fov < 180))
-				eval_error(ev, arg0(it), "fov must be between 0 and 180 degrees (both excluded), not %.17g", c->fov);
+				eval_error(ev, arg0(it), "fov must be between 0 and 180 degrees (both excluded), not %s",
+				           num_text(c->fov, nb));
 			break;
 		case KW_RESOLUTION:
-			if (whole_of(ev, it->u.item.args.v[0], 1, 65536, "the width", &w) &&
+			/* both, so that a bad width does not hide a bad height */
+			if (whole_of(ev, it->u.item.args.v[0], 1, 65536, "the width", &w) &
 			    whole_of(ev, it->u.item.args.v[1], 1, 65536, "the height", &h)) {
 				if (w * h > LANG_MAX_PIXELS)
 					eval_error(ev, it, "%.0f x %.0f is more pixels than the limit of 2^28", w, h);
@@ -254,8 +287,11 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		eval_error(ev, at_look ? at_look : at_loc ? at_loc : s, "look_at is the same point as location");
 	else if (is_zero(c->up))
 		eval_error(ev, at_up ? at_up : s, "up must not be a zero vector");
-	else if (norm(side) <= 1e-12 * norm(c->up) * norm(dir)) /* relative: scale-free */
-		eval_error(ev, at_up ? at_up : s, "up is parallel to the viewing direction");
+	else if (norm(side) <= 1e-12 * norm(c->up) * norm(dir) && at_up) /* relative: scale-free */
+		eval_error(ev, at_up, "up is parallel to the viewing direction");
+	else if (norm(side) <= 1e-12 * norm(c->up) * norm(dir)) /* the default up: blame the direction */
+		eval_error(ev, at_look ? at_look : at_loc ? at_loc : s,
+		           "the viewing direction is parallel to the default up <0, 1, 0>; give the camera an 'up'");
 }
 
 static void eval_light(struct evaluator *ev, struct ast *s)
@@ -293,6 +329,7 @@ static void material_defaults(struct material_desc *m)
 static int eval_material(struct evaluator *ev, struct ast_block *block, const char *name, struct span sp)
 {
 	struct material_desc m;
+	char nb[32];
 	material_defaults(&m);
 	for (size_t i = 0; i < block->items.n; i++) {
 		struct ast *it = block->items.v[i];
@@ -313,19 +350,19 @@ static int eval_material(struct evaluator *ev, struct ast_block *block, const ch
 			m.checker = vec_of(ev, a->v[0], m.diffuse) && vec_of(ev, a->v[1], m.diffuse2) &&
 			            num_of(ev, a->v[2], &m.checker_size);
 			if (m.checker && !(m.checker_size > 0))
-				eval_error(ev, a->v[2], "the checker's size must be positive, not %.17g", m.checker_size);
+				eval_error(ev, a->v[2], "the checker's size must be positive, not %s", num_text(m.checker_size, nb));
 			break;
 		}
 		case KW_SPECULAR: vec_of(ev, arg0(it), m.specular); break;
 		case KW_SHININESS:
 			if (num_of(ev, arg0(it), &m.shininess) && m.shininess < 0)
-				eval_error(ev, arg0(it), "shininess must not be negative, not %.17g", m.shininess);
+				eval_error(ev, arg0(it), "shininess must not be negative, not %s", num_text(m.shininess, nb));
 			break;
 		case KW_REFLECT: vec_of(ev, arg0(it), m.reflect); break;
 		case KW_TRANSMIT: vec_of(ev, arg0(it), m.transmit); break;
 		case KW_IOR:
 			if (num_of(ev, arg0(it), &m.ior) && !(m.ior > 0))
-				eval_error(ev, arg0(it), "ior must be positive, not %.17g", m.ior);
+				eval_error(ev, arg0(it), "ior must be positive, not %s", num_text(m.ior, nb));
 			break;
 		case KW_FRESNEL: m.fresnel = true; break;
 		case KW_EMIT: vec_of(ev, arg0(it), m.emit); break;
@@ -442,8 +479,11 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 			return false;
 		for (int k = 0; k < 3; k++) {
 			if (f[k] != floor(f[k]) || f[k] < 0 || f[k] >= (double)vl->n) {
-				eval_error(ev, fl->v[i], "a face's indices must be whole numbers from 0 to %zu (0-based), not %.17g",
-				           vl->n - 1, f[k]);
+				/* at the index itself when the face is written <i, j, k> */
+				struct ast *at = fl->v[i]->kind == AST_VEC ? fl->v[i]->u.vec[k] : fl->v[i];
+				char nb[32];
+				eval_error(ev, at, "a face's indices must be whole numbers from 0 to %zu (0-based), not %s",
+				           vl->n - 1, num_text(f[k], nb));
 				return false;
 			}
 			m->faces[i][k] = (uint32_t)f[k];
@@ -452,7 +492,8 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 	if (lists[2] && ok) {
 		struct ast_list *nl = &lists[2]->u.item.block->args;
 		if (nl->n != vl->n) {
-			eval_error(ev, lists[2], "a mesh needs one normal per vertex: %zu vertices, %zu normals", vl->n, nl->n);
+			eval_error(ev, lists[2], "a mesh needs one normal per vertex: %zu vert%s, %zu normal%s", vl->n,
+			           vl->n == 1 ? "ex" : "ices", nl->n, nl->n == 1 ? "" : "s");
 			return false;
 		}
 		m->nnormals = nl->n;
@@ -480,7 +521,8 @@ static void eval_object(struct evaluator *ev, struct ast *s, const struct source
 		obj.kind = OBJ_SPHERE;
 		ok = vec_of(ev, args->v[0], obj.u.sphere.center) && num_of(ev, args->v[1], &obj.u.sphere.radius);
 		if (ok && !(obj.u.sphere.radius > 0)) {
-			eval_error(ev, args->v[1], "a sphere's radius must be positive, not %.17g", obj.u.sphere.radius);
+			char nb[32];
+			eval_error(ev, args->v[1], "a sphere's radius must be positive, not %s", num_text(obj.u.sphere.radius, nb));
 			ok = false;
 		}
 		break;
@@ -529,6 +571,11 @@ static void eval_object(struct evaluator *ev, struct ast *s, const struct source
 		case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:
 			ok &= apply_transform(ev, it, &x, kw == KW_SPHERE);
 			moved = true;
+			for (int r = 0; r < 12 && ok; r++) /* scale 1e200 scale 1e200 */
+				if (!isfinite(x.m[r / 4][r % 4])) {
+					eval_error(ev, it, "the transforms make the object too large to be numbers");
+					ok = false;
+				}
 			break;
 		case KW_SMOOTH:
 			obj.smooth = true;
@@ -583,9 +630,9 @@ static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source
 static void eval_samples(struct evaluator *ev, struct ast *s)
 {
 	struct samples_desc *sd = &ev->out->samples;
-	struct ast *count_at = s->u.stmt.value, *pattern_at = NULL;
+	struct ast *count_at = s->u.stmt.value, *pattern_at = NULL, *target_at = NULL;
 	double x;
-	bool pattern_given = false;
+	char nb[32];
 	if (count_at && whole_of(ev, count_at, 1, 65536, "the sample count", &x))
 		sd->count = (int)x;
 	struct ast_list *items = s->u.stmt.block ? &s->u.stmt.block->items : NULL;
@@ -599,7 +646,7 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 			break;
 		case KW_PATTERN:
 			pattern_at = it;
-			pattern_given = true;
+			sd->pattern_given = true;
 			sd->pattern = (enum sample_pattern)arg0(it)->u.ident.builtin;
 			break;
 		case KW_SEED:
@@ -607,13 +654,18 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 				sd->seed = (uint64_t)x;
 			break;
 		case KW_TARGET_ERROR:
+			target_at = arg0(it);
 			if (num_of(ev, arg0(it), &sd->target_error) && !(sd->target_error > 0))
-				eval_error(ev, arg0(it), "target_error must be positive, not %.17g", sd->target_error);
+				eval_error(ev, arg0(it), "target_error must be positive, not %s", num_text(sd->target_error, nb));
 			break;
 		}
 	}
-	if (!pattern_given)
+	if (!sd->pattern_given)
 		sd->pattern = sd->count == 1 ? PATTERN_CENTER : PATTERN_JITTERED;
+	if (target_at && sd->pattern == PATTERN_GRID)
+		/* an adaptive pixel stops after a prefix of its samples, and a grid's prefix is
+		 * a band of rows, not the whole pixel */
+		eval_error(ev, target_at, "target_error needs a random, jittered or poisson pattern, not grid");
 	if (sd->pattern == PATTERN_CENTER && sd->count != 1)
 		eval_error(ev, pattern_at, "pattern center takes exactly one sample, but count is %d", sd->count);
 	if (sd->pattern == PATTERN_GRID) {
@@ -632,10 +684,14 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 	if (!whole_of(ev, s->u.loop.from, -9007199254740992.0, 9007199254740992.0, "a for loop's start", &from) ||
 	    !whole_of(ev, s->u.loop.to, -9007199254740992.0, 9007199254740992.0, "a for loop's end", &to))
 		return;
+	if (ev->iterations > LANG_MAX_ITERATIONS) /* the limit was hit: no loop runs any more */
+		return;
 	double n = to > from ? to - from : 0;
 	if (n > (double)(LANG_MAX_ITERATIONS - ev->iterations)) {
 		eval_error_span(ev, s, span_join(s->u.loop.from->span, s->u.loop.to->span),
 		                "the for loops would run more than %d iterations in all", LANG_MAX_ITERATIONS);
+		/* once: the enclosing loops' later runs would only say it again, elsewhere */
+		ev->iterations = (uint64_t)LANG_MAX_ITERATIONS + 1;
 		return;
 	}
 	ev->iterations += (uint64_t)n;

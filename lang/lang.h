@@ -18,6 +18,7 @@ struct lang_ctx {
 	bool abort;                   /* a fatal lexical error: report nothing more */
 	uint32_t pos;                 /* local offset of the scanner */
 	unsigned nopen;               /* open brackets, innermost last */
+	unsigned nopen_of[3];         /* how many of them are '{', '(' and '<' */
 	struct { struct span sp; char ch; } open[LANG_MAX_NESTING];
 };
 

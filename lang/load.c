@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "arena.h"
 #include "check.h"
@@ -38,8 +39,18 @@ static int read_stdin(char **text, uint32_t *len)
 	return 0;
 }
 
-enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out)
+static double now(void)
 {
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out,
+                                 struct load_times *times)
+{
+	struct load_times t = { 0 };
+	double t0 = now();
 	bool from_stdin = strcmp(path, "-") == 0;
 	scene_desc_init(out);
 	char *text;
@@ -54,9 +65,16 @@ enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_
 	                                           (struct span){ 0, 0 });
 	struct arena *a = arena_new();
 	struct ast_list stmts = lang_parse(a, d, src);
-	unsigned nslots = lang_check(a, d, src, &stmts);
+	double t1 = now();
+	t.parse = t1 - t0;
+	unsigned nslots = lang_check(a, d, src, &stmts); /* parses included files too */
+	double t2 = now();
+	t.check = t2 - t1;
 	if (d->errors == 0)
 		lang_eval(d, &stmts, nslots, out);
+	t.eval = now() - t2;
 	arena_free(a);
+	if (times)
+		*times = t;
 	return d->errors ? LOAD_SCENE_ERROR : LOAD_OK;
 }

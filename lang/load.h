@@ -7,9 +7,14 @@
 
 enum load_status { LOAD_OK = 0, LOAD_SCENE_ERROR = 1, LOAD_IO_ERROR = 3 };
 
+struct load_times {
+	double parse, check, eval;     /* seconds; parse includes reading the file */
+};
+
 /* Reads the scene at path ("-": standard input), with its includes, and evaluates it into
  * out (always initialised; scene_desc_free it). Diagnostics go to d. The status doubles
- * as the command's exit status. */
-enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out);
+ * as the command's exit status. times may be NULL. */
+enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out,
+                                 struct load_times *times);
 
 #endif

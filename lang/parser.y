@@ -91,6 +91,7 @@ stmts:
 ;
 stmt:
 	LET IDENT '=' expr                  { $$ = ast_let(A, @$, $2, @2, $4); }
+|	LET IDENT '=' error                 { $$ = ast_let(A, @$, $2, @2, ast_new(A, AST_ERROR, @4)); } /* still binds */
 |	INCLUDE STRING                      { $$ = ast_include(A, @$, $2.text, @2); }
 |	FOR IDENT IN expr DOTDOT expr '{' stmts '}'
 	                                    { $$ = ast_for(A, @$, $2, @2, $4, $6, $8); }
@@ -133,6 +134,7 @@ item:
 |	MATERIAL opt_args                   { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 |	IDENT opt_args                      { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); }
+|	IDENT list_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, $2); } /* misspelt 'vertices' */
 ;
 opt_args:
 	%empty %prec NO_ARGS                { $$ = no_list; }
@@ -268,22 +270,38 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 	}
 	diag_error(ctx->diag, at, "unexpected %s%s", what, list);
 
-	if (ctx->nopen > 0) {
-		char open = ctx->open[ctx->nopen - 1].ch;
+	/* The note names the innermost bracket open before the error, when its closer was
+	 * expected and what came instead looks like what follows a missing closer: the end,
+	 * a statement, another closer. (The lexer has already pushed an unexpected opener.) */
+	unsigned k = ctx->nopen;
+	while (k > 0 && ctx->open[k - 1].sp.start >= at.start)
+		k--;
+	const char *got_name = yysymbol_name(got);
+	bool missing = got == YYSYMBOL_YYEOF || got == YYSYMBOL_LET || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR
+	            || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_MESH
+	            || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH
+	            || strcmp(got_name, "'}'") == 0 || strcmp(got_name, "')'") == 0 || strcmp(got_name, "'>'") == 0;
+	if (k > 0 && missing) {
+		char open = ctx->open[k - 1].ch;
 		char closer[4] = { '\'', open == '{' ? '}' : open == '(' ? ')' : '>', '\'', '\0' };
 		for (int i = 0; i < n; i++)
 			if (strcmp(yysymbol_name(expected[i]), closer) == 0) {
-				diag_note(ctx->diag, ctx->open[ctx->nopen - 1].sp, "to match this '%c'", open);
+				diag_note(ctx->diag, ctx->open[k - 1].sp, "to match this '%c'", open);
 				break;
 			}
 	}
 	return 0;
 }
 
-/* Bison's own failures (its stack is bounded by the nesting limit, so this is only
- * memory running out). */
+/* Bison's own failure: "memory exhausted" when its stack would pass YYMAXDEPTH (10000).
+ * Brackets stop at 1000 deep and each holds fewer than ten symbols that are not
+ * operators, so only a run of pending operators (`- - - - 1`, thousands long) gets
+ * there, and that is an expression nested deeper than the limit. */
 static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const char *msg)
 {
 	(void)scanner;
-	diag_error(ctx->diag, *loc, "%s", msg);
+	if (strcmp(msg, "memory exhausted") == 0)
+		diag_error(ctx->diag, *loc, "expression nested more than %d deep", LANG_MAX_NESTING);
+	else
+		diag_error(ctx->diag, *loc, "%s", msg);
 }

@@ -90,6 +90,7 @@ struct samples_desc {
 	enum sample_pattern pattern;
 	uint64_t seed;
 	double target_error;           /* 0: not adaptive */
+	bool pattern_given;            /* false: the default for count, which -s may change */
 };
 
 struct scene_desc {

@@ -23,7 +23,8 @@ expect_status 3 "$SCN" check "$work"
 expect_grep "$work/err" 'Is a directory'
 
 # standard input
-printf 'sphere { <0,0,0>, 1 }\n' | expect_status 0 "$SCN" check -
+printf 'sphere { <0,0,0>, 1 }\n' >"$work/ok.scn"
+expect_status 0 "$SCN" check - <"$work/ok.scn"
 printf 'sphere { <0,0,0>, -1 }\n' >"$work/in.scn"
 expect_status 1 "$SCN" check - <"$work/in.scn"
 expect_grep "$work/err" "^<stdin>:1:19: error: a sphere's radius must be positive, not -1$"
