@@ -7,12 +7,17 @@ lang_libscnlang_a_SOURCES = \
 	%D%/keywords.c %D%/keywords.h \
 	%D%/lang.h \
 	%D%/lexer.l \
-	%D%/parser.y \
-	%D%/xalloc.c %D%/xalloc.h
+	%D%/parser.y
 BUILT_SOURCES += %D%/parser.h
 lang_libscnlang_a_SOURCES += \
 	%D%/builtins.c %D%/builtins.h \
 	%D%/check.c %D%/check.h \
 	%D%/eval.c %D%/eval.h \
 	%D%/scene_desc.c %D%/scene_desc.h
-lang_libscnlang_a_SOURCES += %D%/load.c %D%/load.h
+lang_libscnlang_a_SOURCES += %D%/load.c %D%/load.h %D%/lower.c %D%/lower.h
+# lower.c is the bridge to the renderer: the one part of lang/ that sees render/
+lang_libscnlang_a_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
+
+# Allocation that never fails silently, shared by lang/ and render/.
+noinst_LIBRARIES += lang/libscnutil.a
+lang_libscnutil_a_SOURCES = %D%/xalloc.c %D%/xalloc.h

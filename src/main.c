@@ -1,27 +1,20 @@
-/* main.c: the scn command: argument parsing, dispatch to the subcommands, exit statuses
- * (0 success, 1 errors in the scene, 2 bad command line, 3 a file could not be read or
- * written, 4 the render failed). */
+/* main.c: the scn command: dispatch to the subcommands, --help and --version. Exit
+ * statuses: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not be
+ * read or written, 4 the render failed. */
 #include "config.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "diag.h"
-#include "load.h"
-#include "scene_desc.h"
+#include "cli.h"
 
-enum { EXIT_SCENE = 1, EXIT_USAGE = 2, EXIT_IO = 3, EXIT_RENDER = 4 };
-
-struct command {
-	const char *name;
-	const char *usage;
-	const char *help;
-	int (*run)(int argc, char **argv);
-};
-
-static int run_check(int argc, char **argv);
-static int run_not_built(int argc, char **argv);
+static int not_built(const struct command *self, int argc, char **argv)
+{
+	(void)argc;
+	(void)argv;
+	fprintf(stderr, "scn: '%s' is not built yet in scn %s\n", self->name, PACKAGE_VERSION);
+	return EXIT_RENDER;
+}
 
 static const struct command commands[] = {
 	{ "check", "scn check [--dump] SCENE",
@@ -29,23 +22,71 @@ static const struct command commands[] = {
 	  "every error and warning as file:line:col with the source line and a caret.\n"
 	  "  --dump   print the evaluated scene (every value computed, loops expanded)\n"
 	  "Exit status: 0 clean (warnings allowed), 1 errors in the scene, 3 unreadable file.\n",
-	  run_check },
-	{ "render", "scn render SCENE [-o OUT] [-W WIDTH] [-H HEIGHT] [-s SAMPLES] [-p PATTERN] ...",
-	  "Renders SCENE to an image. Not built yet in this version: use 'scn check'.\n",
-	  run_not_built },
+	  cmd_check },
+	{ "render",
+	  "scn render SCENE [-o OUT] [-W WIDTH] [-H HEIGHT] [-s SAMPLES] [-p PATTERN] [-d MAX_DEPTH]\n"
+	  "                  [-j THREADS] [--accel bvh|none] [--region X0,Y0,X1,Y1] [--seed N]\n"
+	  "                  [--bit-depth 8|16] [--float] [--stats] [--progress | --no-progress] [-q]",
+	  "Renders SCENE ('-' reads standard input) to OUT, by default the scene's name with .png.\n"
+	  "OUT's extension picks the format: .png (8-bit sRGB, or --bit-depth 16), .exr (linear\n"
+	  "half float, or --float for 32-bit), .ppm (sRGB, 8 or 16 bits). The image is written to a\n"
+	  "temporary file and renamed into place, so a failed render leaves no partial file.\n"
+	  "  -W, -H        image size, overriding the camera's resolution\n"
+	  "  -s, -p        samples per pixel and their pattern (center grid random jittered poisson)\n"
+	  "  -d            max_depth, the bounce limit\n"
+	  "  -j            threads; 0 (the default) uses every core; the image does not depend on it\n"
+	  "  --accel       bvh (the default) or none (brute force)\n"
+	  "  --region      render only the pixels [X0,X1) x [Y0,Y1); the image is that rectangle\n"
+	  "  --seed        the sampling seed\n"
+	  "  --stats       time of each phase, rays by kind, non-finite radiance values\n"
+	  "  --progress    a progress bar with an ETA on standard error (default: on a terminal)\n"
+	  "  -q            no progress bar\n"
+	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
+	  "be read or written, 4 the render failed.\n",
+	  cmd_render },
 	{ "pov", "scn pov SCENE [-o OUT.pov]",
-	  "Writes the equivalent POV-Ray 3.7 scene. Not built yet in this version.\n",
-	  run_not_built },
-	{ "diff", "scn diff A B [--heatmap OUT.png] [--max-rmse X]",
-	  "Measures the error between two images. Not built yet in this version.\n",
-	  run_not_built },
+	  "Writes the POV-Ray 3.7 scene that renders the same image as SCENE ('-' reads standard\n"
+	  "input) to OUT.pov, by default the scene's name with .pov ('-o -': standard output).\n"
+	  "Its first lines are comments with the povray command line that renders it (run in the\n"
+	  "file's folder; a 16-bit linear PNG) and with whatever POV-Ray cannot match exactly,\n"
+	  "such as random sample patterns. The file is written to a temporary file and renamed\n"
+	  "into place.\n"
+	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
+	  "be read or written.\n",
+	  cmd_pov },
+	{ "diff",
+	  "scn diff A B [--heatmap OUT.png] [--downsample N] [--ppm srgb|linear[,srgb|linear]]\n"
+	  "              [--max-rmse X] [--min-psnr DB] [--max-error X] [--max-mean X] [--max-off P%] [-q]",
+	  "Compares images A and B (PNG 8 or 16 bits, OpenEXR, binary PPM) in linear light: every\n"
+	  "channel of every pixel. A PNG follows its sRGB and gAMA chunks (POV-Ray's +FN16\n"
+	  "File_Gamma=1.0 files say gAMA 1.0: linear) and is sRGB without them; EXR is linear; PPM,\n"
+	  "which cannot say, is taken as sRGB (scn's and POV-Ray's default) unless --ppm says linear\n"
+	  "(POV-Ray with File_Gamma=1.0). Prints one line per metric:\n"
+	  "  size WxH\n"
+	  "  rmse R (psnr P dB)       root mean square channel error; psnr = 20 log10(1/R), inf if R = 0\n"
+	  "  mean M                   mean absolute channel error\n"
+	  "  max E at (X, Y)          largest channel error and its first pixel, row 0 at the top\n"
+	  "                           (without 'at' when E is 0)\n"
+	  "  off>1/255 S% (N pixels)  pixels with a channel off by more than 1/255\n"
+	  "  off>2/255 S% (N pixels)  the same for 2/255\n"
+	  "  --heatmap OUT   a false-colour image (.png, .exr or .ppm) of each pixel's largest\n"
+	  "                  channel error on a log scale: black below 2^-17, then dark blue at\n"
+	  "                  1/65535, blue at 2^-12, yellow at 1/256, white at 1/16 and above\n"
+	  "  --downsample N  average B over N x N blocks first (B is N times A's size)\n"
+	  "  --ppm ENC       how PPM samples are encoded: srgb (default) or linear, for both\n"
+	  "                  images, or A's,B's (e.g. srgb,linear)\n"
+	  "  --max-rmse X  --min-psnr DB  --max-error X  --max-mean X\n"
+	  "                  fail when the metric is beyond X (X may be a fraction: 2/65535)\n"
+	  "  --max-off P%    fail when more than P% of the pixels are off by more than 2/255\n"
+	  "  -q              print no metrics, only the failures\n"
+	  "Exit status: 0 compared and within every limit, 1 a limit is exceeded (each is named\n"
+	  "on standard error) or the sizes differ, 2 bad command line, 3 an image could not be\n"
+	  "read or the heatmap written.\n",
+	  cmd_diff },
 	{ "converge", "scn converge SCENE [--reference REF] [--budget SECONDS] [--csv OUT.csv] [--plot OUT.svg]",
-	  "Reports image error against render time. Not built yet in this version.\n",
-	  run_not_built },
+	  "Reports image error against render time. Not built yet in this version.\n", not_built },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
-
-static const struct command *current;
 
 static const struct command *find_command(const char *name)
 {
@@ -61,53 +102,6 @@ static void print_usage(FILE *out)
 	for (int i = 0; i < NCOMMANDS; i++)
 		fprintf(out, "  %s\n", commands[i].usage);
 	fprintf(out, "  scn --help | --version | help COMMAND\n");
-}
-
-static int usage_error(const char *fmt, const char *arg)
-{
-	fprintf(stderr, "scn: ");
-	fprintf(stderr, fmt, arg);
-	fprintf(stderr, "\nusage: %s\n", current ? current->usage : "scn COMMAND [ARGS]; see 'scn --help'");
-	return EXIT_USAGE;
-}
-
-static int run_check(int argc, char **argv)
-{
-	bool dump = false;
-	const char *scene = NULL;
-	for (int i = 1; i < argc; i++) {
-		if (strcmp(argv[i], "--dump") == 0)
-			dump = true;
-		else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-			printf("usage: %s\n\n%s", current->usage, current->help);
-			return 0;
-		} else if (argv[i][0] == '-' && argv[i][1] != '\0')
-			return usage_error("unknown option '%s' for check", argv[i]);
-		else if (scene)
-			return usage_error("more than one scene given ('%s')", argv[i]);
-		else
-			scene = argv[i];
-	}
-	if (!scene)
-		return usage_error("no scene given%s", "");
-	struct diag d;
-	diag_init(&d, stderr);
-	struct scene_desc desc;
-	enum load_status status = lang_load_scene(&d, scene, &desc);
-	if (status == LOAD_OK && dump)
-		scene_desc_dump(&desc, stdout);
-	scene_desc_free(&desc);
-	diag_fini(&d);
-	return (int)status;
-}
-
-static int run_not_built(int argc, char **argv)
-{
-	(void)argc;
-	(void)argv;
-	fprintf(stderr, "scn: '%s' is not built yet in scn %s; 'scn check' parses and checks a scene\n",
-	        current->name, PACKAGE_VERSION);
-	return EXIT_RENDER;
 }
 
 int main(int argc, char **argv)
@@ -133,13 +127,10 @@ int main(int argc, char **argv)
 			return 0;
 		}
 		const struct command *c = find_command(argv[2]);
-		if (!c)
-			return usage_error("no command '%s'; see 'scn --help'", argv[2]);
-		printf("usage: %s\n\n%s", c->usage, c->help);
-		return 0;
+		return c ? cli_help(c) : cli_usage_error(NULL, "no command '%s'; see 'scn --help'", argv[2]);
 	}
-	current = find_command(cmd);
-	if (!current)
-		return usage_error("unknown command '%s'; see 'scn --help'", cmd);
-	return current->run(argc - 1, argv + 1);
+	const struct command *c = find_command(cmd);
+	if (!c)
+		return cli_usage_error(NULL, "unknown command '%s'; see 'scn --help'", cmd);
+	return c->run(c, argc - 1, argv + 1);
 }

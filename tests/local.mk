@@ -4,9 +4,16 @@ TEST_EXTENSIONS = .scn .sh
 SCN_LOG_COMPILER = $(SHELL) $(srcdir)/tests/run-test
 SH_LOG_COMPILER = $(SHELL)
 AM_TESTS_ENVIRONMENT = SCN='$(abs_builddir)/scn'; export SCN; \
-	SCN_SRCDIR='$(abs_srcdir)'; export SCN_SRCDIR;
-EXTRA_DIST += tests/run-test tests/lib.sh
+	SCN_SRCDIR='$(abs_srcdir)'; export SCN_SRCDIR; \
+	PROBE='$(abs_builddir)/tests/render/probe'; export PROBE; \
+	LSAN_OPTIONS="suppressions=$(abs_srcdir)/tests/lsan.supp:print_suppressions=0$${LSAN_OPTIONS:+:$$LSAN_OPTIONS}"; \
+	export LSAN_OPTIONS;
+EXTRA_DIST += tests/run-test tests/lib.sh tests/lsan.supp
 
 include tests/errors/local.mk
 include tests/parse/local.mk
 include tests/cli/local.mk
+include tests/hostile/local.mk
+EXTRA_DIST += tests/unit/check.h
+include tests/unit/local.mk
+include tests/render/local.mk

@@ -1,0 +1,375 @@
+/* lower.c: turns the evaluated scene_desc into the renderer's scene: world-space
+ * geometry with transforms baked in, only the materials objects use, mesh files and sky
+ * images loaded (each once). */
+#include "lower.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "camera.h"
+#include "shape.h"
+#include "image.h"
+#include "mesh_import.h"
+#include "xalloc.h"
+
+struct mesh_cache_entry {
+	const char *path;
+	struct mesh_data data;
+	bool ok;
+};
+
+struct lowering {
+	struct diag *diag;
+	const struct scene_desc *desc;
+	struct scene *sc;
+	size_t cap_surfaces, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
+	size_t cap_materials;
+	int *material_map;             /* desc material -> scene material, or -1 */
+	int default_material;          /* the scene material for objects without one, or -1 */
+	struct mesh_cache_entry *mesh_cache;
+	size_t nmesh_cache, cap_mesh_cache;
+	double mesh_seconds;
+};
+
+static double now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static struct vec3 xform_point(const struct xform *x, struct vec3 p)
+{
+	const double (*m)[4] = x->m;
+	return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+	          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+	          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+}
+
+/* The inverse of an affine map (its linear part is invertible: scales are never zero). */
+static struct affine affine_inverse(const struct xform *x)
+{
+	const double (*m)[4] = x->m;
+	double c[3][3] = {
+		{ m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2], m[0][1] * m[1][2] - m[0][2] * m[1][1] },
+		{ m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0], m[0][2] * m[1][0] - m[0][0] * m[1][2] },
+		{ m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1], m[0][0] * m[1][1] - m[0][1] * m[1][0] },
+	};
+	double det = m[0][0] * c[0][0] + m[0][1] * c[1][0] + m[0][2] * c[2][0];
+	struct affine inv;
+	for (int i = 0; i < 3; i++) {
+		for (int j = 0; j < 3; j++)
+			inv.m[i][j] = c[i][j] / det;
+		inv.m[i][3] = -(inv.m[i][0] * m[0][3] + inv.m[i][1] * m[1][3] + inv.m[i][2] * m[2][3]);
+	}
+	return inv;
+}
+
+/* Normals transform by the inverse transpose of the linear part. */
+static struct vec3 xform_normal(const struct affine *inv, struct vec3 n)
+{
+	return v3(inv->m[0][0] * n.x + inv->m[1][0] * n.y + inv->m[2][0] * n.z,
+	          inv->m[0][1] * n.x + inv->m[1][1] * n.y + inv->m[2][1] * n.z,
+	          inv->m[0][2] * n.x + inv->m[1][2] * n.y + inv->m[2][2] * n.z);
+}
+
+static struct material lower_material(const struct material_desc *m)
+{
+	struct material out = {
+		.diffuse = v3a(m->diffuse), .diffuse2 = v3a(m->diffuse2), .checker_size = m->checker_size,
+		.checker = m->checker, .fresnel = m->fresnel, .specular = v3a(m->specular),
+		.reflect = v3a(m->reflect), .transmit = v3a(m->transmit), .emit = v3a(m->emit),
+		.shininess = m->shininess, .ior = m->ior,
+	};
+	return out;
+}
+
+/* The scene material of an object: used materials only, in first-use order. */
+static uint32_t material_of(struct lowering *lw, int desc_index)
+{
+	struct scene *sc = lw->sc;
+	int *slot = desc_index >= 0 ? &lw->material_map[desc_index] : &lw->default_material;
+	if (*slot < 0) {
+		/* LANGUAGE.md's default material: diffuse 0.8 grey, nothing else */
+		static const struct material default_material = {
+			.diffuse = { 0.8, 0.8, 0.8 }, .shininess = 50, .ior = 1,
+		};
+		/* doubling: 100000 inline materials must not be copied 100000 times */
+		xgrow((void **)&sc->materials, &lw->cap_materials, sc->nmaterials + 1, sizeof *sc->materials);
+		sc->materials[sc->nmaterials] = desc_index >= 0 ? lower_material(&lw->desc->materials[desc_index])
+		                                                : default_material;
+		*slot = (int)sc->nmaterials++;
+	}
+	return (uint32_t)*slot;
+}
+
+static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
+{
+	struct scene *sc = lw->sc;
+	uint32_t mat = material_of(lw, o->material);
+	int32_t to_object = -1;
+	if (sc->materials[mat].checker && o->xform >= 0) {
+		xgrow((void **)&sc->affines, &lw->cap_affines, sc->naffines + 1, sizeof *sc->affines);
+		sc->affines[sc->naffines] = affine_inverse(&lw->desc->xforms[o->xform]);
+		to_object = (int32_t)sc->naffines++;
+	}
+	xgrow((void **)&sc->surfaces, &lw->cap_surfaces, sc->nsurfaces + 1, sizeof *sc->surfaces);
+	sc->surfaces[sc->nsurfaces] = (struct surface){ mat, to_object };
+	return (uint32_t)sc->nsurfaces++;
+}
+
+static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
+{
+	struct scene *sc = lw->sc;
+	xgrow((void **)&sc->vertices, &lw->cap_vertices, sc->nvertices + 1, sizeof *sc->vertices);
+	sc->vertices[sc->nvertices] = v;
+	return (uint32_t)sc->nvertices++;
+}
+
+/* Adds a triangle unless it has no area (NUMERICS.md section 5); returns whether it did. */
+static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_t n[3], uint32_t surface)
+{
+	struct scene *sc = lw->sc;
+	struct vec3 a = sc->vertices[v[0]], b = sc->vertices[v[1]], c = sc->vertices[v[2]];
+	struct vec3 area = vcross(vsub(b, a), vsub(c, a));
+	if (vzero(area) || !isfinite(vdot(area, area)))
+		return false;
+	xgrow((void **)&sc->triangles, &lw->cap_triangles, sc->ntriangles + 1, sizeof *sc->triangles);
+	struct triangle *t = &sc->triangles[sc->ntriangles++];
+	memcpy(t->v, v, sizeof t->v);
+	memcpy(t->n, n, sizeof t->n);
+	t->surface = surface;
+	return true;
+}
+
+/* The mesh data of a file (read once however many objects use it), or NULL after an error. */
+static const struct mesh_data *mesh_file(struct lowering *lw, const struct mesh_desc *m)
+{
+	for (size_t i = 0; i < lw->nmesh_cache; i++)
+		if (strcmp(lw->mesh_cache[i].path, m->path) == 0)
+			return lw->mesh_cache[i].ok ? &lw->mesh_cache[i].data : NULL;
+	xgrow((void **)&lw->mesh_cache, &lw->cap_mesh_cache, lw->nmesh_cache + 1, sizeof *lw->mesh_cache);
+	struct mesh_cache_entry *entry = &lw->mesh_cache[lw->nmesh_cache++];
+	memset(entry, 0, sizeof *entry);
+	entry->path = m->path;
+	char err[512];
+	double t0 = now();
+	entry->ok = mesh_import(m->path, &entry->data, err, sizeof err) == 0;
+	lw->mesh_seconds += now() - t0;
+	if (!entry->ok)
+		diag_error(lw->diag, m->file_span, "%s", err);
+	return entry->ok ? &entry->data : NULL;
+}
+
+static void lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at)
+{
+	const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
+	struct mesh_data inline_data = {
+		.vertices = m->vertices, .nvertices = m->nvertices, .normals = m->normals,
+		.nnormals = m->nnormals, .faces = m->faces, .nfaces = m->nfaces,
+	};
+	const struct mesh_data *data = m->file ? mesh_file(lw, m) : &inline_data;
+	if (!data)
+		return;
+	struct scene *sc = lw->sc;
+	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
+	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
+	struct affine inv = affine_inverse(x);
+	uint32_t surface = add_surface(lw, o);
+	uint32_t base = (uint32_t)sc->nvertices;
+	for (size_t i = 0; i < data->nvertices; i++)
+		add_vertex(lw, xform_point(x, v3a(data->vertices[i])));
+
+	uint32_t nbase = (uint32_t)sc->nnormals;
+	if (o->smooth) {
+		xgrow((void **)&sc->normals, &lw->cap_normals, sc->nnormals + data->nvertices, sizeof *sc->normals);
+		struct vec3 *normals = &sc->normals[nbase];
+		if (data->nnormals == data->nvertices && data->normals) {
+			for (size_t i = 0; i < data->nvertices; i++)
+				normals[i] = xform_normal(&inv, v3a(data->normals[i]));
+		} else {
+			/* area-weighted: the unnormalised face normal is twice the face's area */
+			memset(normals, 0, data->nvertices * sizeof *normals);
+			for (size_t f = 0; f < data->nfaces; f++) {
+				const uint32_t *v = data->faces[f];
+				struct vec3 a = sc->vertices[base + v[0]], b = sc->vertices[base + v[1]], c = sc->vertices[base + v[2]];
+				struct vec3 fn = vcross(vsub(b, a), vsub(c, a));
+				for (int k = 0; k < 3; k++)
+					normals[v[k]] = vadd(normals[v[k]], fn);
+			}
+		}
+		for (size_t i = 0; i < data->nvertices; i++) {
+			double len = vlen(normals[i]);
+			normals[i] = len > 0 && isfinite(len) ? vscale(normals[i], 1 / len) : v3s(0);
+		}
+		sc->nnormals += data->nvertices;
+	}
+	size_t dropped = 0;
+	for (size_t f = 0; f < data->nfaces; f++) {
+		uint32_t v[3], n[3] = { NO_NORMALS, NO_NORMALS, NO_NORMALS };
+		for (int k = 0; k < 3; k++) {
+			v[k] = base + data->faces[f][k];
+			if (o->smooth)
+				n[k] = nbase + data->faces[f][k];
+		}
+		/* a vertex without a usable normal (all its faces degenerate): shade the face flat */
+		if (o->smooth && (vzero(sc->normals[n[0]]) || vzero(sc->normals[n[1]]) || vzero(sc->normals[n[2]])))
+			n[0] = n[1] = n[2] = NO_NORMALS;
+		dropped += !add_triangle(lw, v, n, surface);
+	}
+	if (dropped)
+		diag_warning(lw->diag, *at, "%zu of this mesh's %zu triangles have no area and are not drawn", dropped,
+		             data->nfaces);
+}
+
+static void lower_object(struct lowering *lw, const struct object_desc *o)
+{
+	struct scene *sc = lw->sc;
+	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
+	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
+	switch (o->kind) {
+	case OBJ_SPHERE: {
+		/* only uniform scales reach a sphere: any column's length is the scale */
+		double scale = vlen(v3(x->m[0][0], x->m[1][0], x->m[2][0]));
+		xgrow((void **)&sc->spheres, &lw->cap_spheres, sc->nspheres + 1, sizeof *sc->spheres);
+		struct sphere *s = &sc->spheres[sc->nspheres++];
+		s->center = xform_point(x, v3a(o->u.sphere.center));
+		s->radius = o->u.sphere.radius * scale;
+		s->surface = add_surface(lw, o);
+		break;
+	}
+	case OBJ_PLANE: {
+		struct vec3 n = vnorm(v3a(o->u.plane.normal));
+		struct vec3 on = xform_point(x, vscale(n, o->u.plane.offset)); /* a point of the plane */
+		struct affine inv = affine_inverse(x);
+		struct vec3 wn = vnorm(xform_normal(&inv, n));
+		xgrow((void **)&sc->planes, &lw->cap_planes, sc->nplanes + 1, sizeof *sc->planes);
+		struct plane *p = &sc->planes[sc->nplanes++];
+		p->normal = wn;
+		p->offset = vdot(wn, on);
+		p->surface = add_surface(lw, o);
+		break;
+	}
+	case OBJ_TRIANGLE: {
+		uint32_t v[3], n[3] = { NO_NORMALS, NO_NORMALS, NO_NORMALS };
+		for (int k = 0; k < 3; k++)
+			v[k] = add_vertex(lw, xform_point(x, v3a(o->u.triangle.v[k])));
+		uint32_t surface = add_surface(lw, o);
+		if (!add_triangle(lw, v, n, surface))
+			sc->nvertices -= 3; /* eval.c warned already */
+		break;
+	}
+	case OBJ_MESH:
+		lower_mesh(lw, o, &o->span);
+		break;
+	}
+}
+
+static bool lower_sky(struct lowering *lw)
+{
+	const struct skybox_desc *k = &lw->desc->skybox;
+	struct sky *sky = &lw->sc->sky;
+	sky->intensity = k->intensity;
+	switch (k->kind) {
+	case SKY_NONE:
+		sky->kind = SKY_BLACK;
+		return true;
+	case SKY_COLOR:
+		sky->kind = SKY_CONSTANT;
+		sky->color = v3a(k->color);
+		return true;
+	case SKY_GRADIENT:
+		sky->kind = SKY_ZENITH_HORIZON;
+		sky->color = v3a(k->color);
+		sky->horizon = v3a(k->horizon);
+		return true;
+	case SKY_IMAGE: {
+		struct image *img;
+		char err[512];
+		if (image_read(k->image_path, &img, err, sizeof err) != 0) {
+			diag_error(lw->diag, k->span, "cannot read the skybox image: %s", err);
+			return false;
+		}
+		sky->kind = SKY_LATLONG;
+		sky->width = img->width;
+		sky->height = img->height;
+		sky->texels = img->rgb;
+		img->rgb = NULL;
+		image_free(img);
+		sky->rot_sin = sin(k->rotate * (M_PI / 180));
+		sky->rot_cos = cos(k->rotate * (M_PI / 180));
+		return true;
+	}
+	}
+	return true;
+}
+
+/* Warns about point lights inside a sphere: they light nothing outside it unless it
+ * transmits. */
+static void warn_enclosed_lights(struct lowering *lw)
+{
+	const struct scene_desc *d = lw->desc;
+	const struct scene *sc = lw->sc;
+	for (size_t i = 0; i < d->nlights; i++) {
+		if (d->lights[i].directional)
+			continue;
+		struct vec3 p = v3a(d->lights[i].vec);
+		for (size_t s = 0; s < sc->nspheres; s++)
+			if (vlen(vsub(p, sc->spheres[s].center)) < sc->spheres[s].radius) {
+				diag_warning(lw->diag, d->lights[i].span, "this light is inside a sphere");
+				break;
+			}
+	}
+}
+
+bool lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out, struct lower_times *times)
+{
+	memset(out, 0, sizeof *out);
+	memset(times, 0, sizeof *times);
+	struct lowering lw = { .diag = d, .desc = desc, .sc = out, .default_material = -1 };
+	int errors = d->errors;
+
+	const struct camera_desc *c = &desc->camera;
+	camera_setup(&out->camera, v3a(c->location), v3a(c->look_at), v3a(c->up), c->fov, c->width, c->height);
+	out->lights = xcalloc(desc->nlights, sizeof *out->lights);
+	for (size_t i = 0; i < desc->nlights; i++) {
+		const struct light_desc *l = &desc->lights[i];
+		struct light *li = &out->lights[out->nlights++];
+		li->kind = l->directional ? LIGHT_DIRECTIONAL : LIGHT_POINT;
+		li->pos = v3a(l->vec);
+		li->to_light = l->directional ? vneg(vnorm(v3a(l->vec))) : v3s(0);
+		li->color = vscale(v3a(l->color), l->intensity);
+		li->shadowless = l->shadowless;
+	}
+
+	lw.material_map = xmalloc((desc->nmaterials ? desc->nmaterials : 1) * sizeof *lw.material_map);
+	for (size_t i = 0; i < desc->nmaterials; i++)
+		lw.material_map[i] = -1;
+	for (size_t i = 0; i < desc->nobjects; i++)
+		lower_object(&lw, &desc->objects[i]);
+	times->load_meshes = lw.mesh_seconds;
+	double t0 = now();
+	lower_sky(&lw);
+	times->load_images = now() - t0;
+
+	static const enum sample_kind kinds[PATTERN_COUNT] = {
+		[PATTERN_CENTER] = SAMPLE_CENTER, [PATTERN_GRID] = SAMPLE_GRID, [PATTERN_RANDOM] = SAMPLE_RANDOM,
+		[PATTERN_JITTERED] = SAMPLE_JITTERED, [PATTERN_POISSON] = SAMPLE_POISSON,
+	};
+	out->sampling = (struct sampling){ desc->samples.count, kinds[desc->samples.pattern], desc->samples.seed,
+	                                   desc->samples.target_error };
+	out->max_depth = desc->max_depth;
+	warn_enclosed_lights(&lw);
+
+	for (size_t i = 0; i < lw.nmesh_cache; i++)
+		mesh_data_free(&lw.mesh_cache[i].data);
+	free(lw.mesh_cache);
+	free(lw.material_map);
+	if (out->nspheres + out->ntriangles + out->nplanes >= (1u << PRIM_KIND_SHIFT)) {
+		diag_plain(d, DIAG_ERROR, "the scene has more than 2^30 primitives");
+		return false;
+	}
+	return d->errors == errors;
+}

@@ -1,0 +1,22 @@
+/* lower.h: the bridge from the front end to the renderer: scene_desc -> struct scene.
+ * The only code that knows both. */
+#ifndef SCN_LOWER_H
+#define SCN_LOWER_H
+
+#include "diag.h"
+#include "scene.h"
+#include "scene_desc.h"
+
+struct lower_times {
+	double load_meshes, load_images;   /* seconds */
+};
+
+/* Lowers desc into out, keeping only what the scene uses: used materials, mesh files
+ * that objects name (each read once), the rays the materials and lights can need.
+ * Transforms are baked into world-space geometry; the BVH is left to the caller
+ * (scn check lowers without one). Reports what it cannot load, and warnings, to d (at
+ * the place in the scene) and returns false after an error; out is always
+ * scene_free-able. */
+bool lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out, struct lower_times *times);
+
+#endif

@@ -1,0 +1,27 @@
+/* bvh.h: the acceleration structure over a scene's bounded primitives (spheres and
+ * triangles); planes, being unbounded, are tested beside it. The two queries are the
+ * closest hit and the shadow filter. */
+#ifndef SCN_BVH_H
+#define SCN_BVH_H
+
+#include "scene.h"
+#include "shape.h"
+
+enum accel { ACCEL_BVH, ACCEL_NONE };
+
+/* Builds over sc's spheres and triangles. ACCEL_NONE makes one leaf of everything:
+ * brute force through the same code, for tests and the scaling study. */
+struct bvh *bvh_build(const struct scene *sc, enum accel kind);
+void bvh_free(struct bvh *b);
+
+/* Closest hit with 0 < t < h->t over every primitive, planes included; updates h. */
+bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h);
+
+/* The light that passes along r from its origin to tmax: the product of k_t over every
+ * surface crossed (POV-Ray's filtered shadow). Stops early once it is black. */
+struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax);
+
+/* Node count and depth, for --stats. */
+void bvh_shape(const struct bvh *b, size_t *nodes, int *depth);
+
+#endif

@@ -1,0 +1,25 @@
+/* camera.c: framing and primary rays, in double precision, pixel centres at (i + 0.5) / W
+ * with nothing divided by W - 1 (NUMERICS.md section 10). */
+#include "camera.h"
+
+#include <math.h>
+
+void camera_setup(struct camera *c, struct vec3 eye, struct vec3 look_at, struct vec3 up, double fov,
+                  int width, int height)
+{
+	c->eye = eye;
+	c->dir = vnorm(vsub(look_at, eye));
+	c->right = vnorm(vcross(up, c->dir));
+	c->up = vcross(c->dir, c->right);
+	c->tan_half = tan(fov * (M_PI / 360));
+	c->width = width;
+	c->height = height;
+}
+
+struct ray camera_ray(const struct camera *c, double u, double v)
+{
+	double sx = (2 * u - 1) * c->tan_half;
+	double sy = (1 - 2 * v) * c->tan_half * ((double)c->height / c->width);
+	struct vec3 d = vadd(c->dir, vadd(vscale(c->right, sx), vscale(c->up, sy)));
+	return (struct ray){ c->eye, vnorm(d) };
+}

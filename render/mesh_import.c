@@ -1,0 +1,324 @@
+/* mesh_import.c: mesh files through assimp's C API, flattened into one triangle list in
+ * double precision (assimp stores float, so a file's values keep float precision at best). */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include <assimp/cimport.h>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "mesh_import.h"
+#include "xalloc.h"
+
+/* assimp runs in two stages, because Debian's build keeps assimp's internal assertions on
+ * and Triangulate aborts the process (ai_assert in TriangulateProcess.cpp) when a mesh's
+ * mPrimitiveTypes claims polygons it does not have, which a truncated PLY produces.
+ *
+ * The read: the reader, then ValidateDataStructure, which rejects out-of-range indices and
+ * the like. Validation must run here and not later: when aiApplyPostProcessing fails,
+ * assimp 5.2 crashes (in aiReleaseImport) instead of returning NULL.
+ *
+ * The rest, after we recompute mPrimitiveTypes from the faces: RemoveComponent drops what
+ * we never use (removed_components), so that PreTransformVertices, which merges meshes by
+ * material, merges them all into one, and JoinIdenticalVertices then joins corners by
+ * position and normal alone: a UV seam or a material boundary does not split a smooth
+ * surface, while corners with different normals stay apart and keep the file's hard
+ * edges. SortByPType with AI_CONFIG_PP_SBP_REMOVE drops points and lines. None of these
+ * fails on a valid scene that has a polygon. No GenNormals: the renderer computes
+ * area-weighted normals itself when the scene asks for smooth. No FindDegenerates: it
+ * drops degenerate triangles silently, and the caller warns about them. */
+static const unsigned read_flags = aiProcess_ValidateDataStructure;
+static const unsigned post_flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
+	aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices;
+
+static const int removed_components = aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
+	aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS | aiComponent_TEXTURES |
+	aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_MATERIALS;
+
+/* How much of a PLY file we search for the end of its header (see check_file). */
+#define PLY_HEADER_MAX 65536
+
+/* What a scene's normals are good for. */
+enum normals {
+	NORMALS_NONE,                  /* no triangle mesh has any */
+	NORMALS_USABLE,                /* every triangle corner has a finite nonzero one */
+	NORMALS_BROKEN                 /* some have, some lack, or some are zero or not finite */
+};
+
+static int fail(char *err, size_t errlen, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(err, errlen, fmt, ap);
+	va_end(ap);
+	return 1;
+}
+
+/* Whether one of the first n bytes of head starts a line that is "end_header", give or
+ * take blanks, as assimp's PLY reader looks for it. */
+static bool ply_header_ends(const char *head, size_t n)
+{
+	static const char token[] = "end_header";
+	const size_t len = sizeof token - 1;
+	for (size_t i = 0; i < n; i++) {
+		if (i > 0 && head[i - 1] != '\n')
+			continue;
+		size_t j = i;
+		while (j < n && (head[j] == ' ' || head[j] == '\t'))
+			j++;
+		if (n - j >= len && memcmp(head + j, token, len) == 0 &&
+		    (n - j == len || memchr(" \t\r\n\f", head[j + len], 6)))
+			return true;
+	}
+	return false;
+}
+
+/* Checks that path can be read, and that a PLY file's header ends: assimp 5.2's PLY reader
+ * loops forever on a header without an end_header line, as in a file cut short inside its
+ * header. Returns 0, or fills err and returns 1. Opening a directory succeeds; reading it
+ * does not. assimp's own message for an unreadable file ("Unable to open file") says
+ * neither which file nor why. */
+static int check_file(const char *path, char *err, size_t errlen)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(errno));
+	char *head = xmalloc(PLY_HEADER_MAX);
+	errno = 0;
+	size_t n = fread(head, 1, PLY_HEADER_MAX, f);
+	int e = ferror(f) ? (errno ? errno : EIO) : 0;
+	fclose(f);
+	int rc = 0;
+	if (e)
+		rc = fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(e));
+	else if (n >= 3 && strncasecmp(head, "ply", 3) == 0 && !ply_header_ends(head, n))
+		rc = fail(err, errlen, "malformed mesh file '%s': the PLY header has no end_header line%s", path,
+		          n == PLY_HEADER_MAX ? " in its first 64 KiB" : "");
+	free(head);
+	return rc;
+}
+
+/* The length of msg without its trailing blanks and full stop, since our messages end
+ * without one; long messages are cut. */
+static int trimmed(const char *msg)
+{
+	size_t n = strlen(msg);
+	while (n > 0 && strchr(" \t\r\n.", msg[n - 1]))
+		n--;
+	return n > 400 ? 400 : (int)n;
+}
+
+/* Fills err with assimp's last error, about path, and returns 1. */
+static int malformed(const char *path, char *err, size_t errlen)
+{
+	const char *msg = aiGetErrorString();
+	if (!msg || !*msg)
+		msg = "the reader gives no reason";
+	return fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);
+}
+
+/* Whether assimp's reader alone, without validation or post-processing, reads path and
+ * finds no polygon in it. A file of only points or lines, or of nothing, fails validation
+ * (which wants a mesh, with faces); this tells that case apart from a broken file. Only
+ * counts are read, as this scene is not validated. */
+static bool reader_finds_no_polygons(const char *path)
+{
+	const struct aiScene *sc = aiImportFile(path, 0);
+	if (!sc)
+		return false;
+	bool none = true;
+	for (unsigned i = 0; none && sc->mMeshes && i < sc->mNumMeshes; i++) {
+		const struct aiMesh *m = sc->mMeshes[i];
+		for (unsigned j = 0; none && m && m->mFaces && j < m->mNumFaces; j++)
+			none = m->mFaces[j].mNumIndices < 3;
+	}
+	aiReleaseImport(sc);
+	return none;
+}
+
+/* Sets each mesh's mPrimitiveTypes from its faces, so that Triangulate's assertion holds.
+ * This writes into the scene that assimp hands out as const, as aiApplyPostProcessing
+ * itself does. Returns 0 if some face has 3 or more corners. Else, or if a face has none
+ * (validation lets that through, and a PLY cut short in its faces gives it), fills err
+ * and returns 1. */
+static int set_primitive_types(const struct aiScene *sc, const char *path, char *err, size_t errlen)
+{
+	bool polygons = false;
+	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+		struct aiMesh *m = sc->mMeshes[i];
+		unsigned types = 0;
+		for (unsigned j = 0; j < m->mNumFaces; j++) {
+			unsigned n = m->mFaces[j].mNumIndices;
+			if (n == 0)
+				return fail(err, errlen, "malformed mesh file '%s': face %u has no vertices "
+				            "(is the file cut short?)", path, j + 1);
+			types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE :
+			         n == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
+		}
+		m->mPrimitiveTypes = types;
+		polygons = polygons || (types & (aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON));
+	}
+	return polygons ? 0 : fail(err, errlen, "no triangles in '%s'", path);
+}
+
+/* Imports path in the two stages described at read_flags; with drop_normals, the file's
+ * normals are removed before vertices are joined. Returns the scene, or NULL with err
+ * filled. */
+static const struct aiScene *import(const char *path, bool drop_normals, char *err, size_t errlen)
+{
+	struct aiPropertyStore *props = aiCreatePropertyStore();
+	aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS,
+	                           removed_components | (drop_normals ? aiComponent_NORMALS : 0));
+	aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+	/* the importer keeps these properties for aiApplyPostProcessing */
+	const struct aiScene *sc = aiImportFileExWithProperties(path, read_flags, NULL, props);
+	aiReleasePropertyStore(props);
+	if (!sc) {
+		malformed(path, err, errlen); /* before the second read overwrites the message */
+		if (reader_finds_no_polygons(path))
+			fail(err, errlen, "no triangles in '%s'", path);
+		return NULL;
+	}
+	if (set_primitive_types(sc, path, err, errlen)) {
+		aiReleaseImport(sc);
+		return NULL;
+	}
+	sc = aiApplyPostProcessing(sc, post_flags);
+	if (!sc)
+		malformed(path, err, errlen);
+	return sc;
+}
+
+static bool is_triangle_mesh(const struct aiMesh *m)
+{
+	return (m->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && m->mNumVertices > 0;
+}
+
+static bool usable_normal(struct aiVector3D n)
+{
+	double len2 = (double)n.x * n.x + (double)n.y * n.y + (double)n.z * n.z;
+	return len2 > 0 && isfinite(len2);
+}
+
+/* Classifies the normals of sc's triangle meshes. An OBJ face without vn among faces with
+ * it gives zero normals, and a PLY may carry junk; either way the renderer is better off
+ * computing all of them than trusting some. */
+static enum normals classify_normals(const struct aiScene *sc)
+{
+	bool some = false, all = true;
+	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+		const struct aiMesh *m = sc->mMeshes[i];
+		if (!is_triangle_mesh(m))
+			continue;
+		if (!m->mNormals) {
+			all = false;
+			continue;
+		}
+		some = true;
+		for (unsigned j = 0; all && j < m->mNumVertices; j++)
+			all = usable_normal(m->mNormals[j]);
+	}
+	return !some ? NORMALS_NONE : all ? NORMALS_USABLE : NORMALS_BROKEN;
+}
+
+/* Copies the triangles of sc's triangle meshes into out, which is empty, with normals
+ * when keep_normals (then every triangle mesh has usable ones). Vertices of each mesh
+ * follow those of the one before, so its indices are offset by the count so far. */
+static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_data *out)
+{
+	size_t nv = 0, nf = 0;
+	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+		const struct aiMesh *m = sc->mMeshes[i];
+		if (!is_triangle_mesh(m))
+			continue;
+		nv += m->mNumVertices;
+		for (unsigned j = 0; j < m->mNumFaces; j++)
+			nf += m->mFaces[j].mNumIndices == 3;
+	}
+	if (nf == 0)
+		return;
+	out->vertices = xmalloc(nv * sizeof *out->vertices);
+	out->normals = keep_normals ? xmalloc(nv * sizeof *out->normals) : NULL;
+	out->faces = xmalloc(nf * sizeof *out->faces);
+	size_t base = 0, f = 0;
+	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
+		const struct aiMesh *m = sc->mMeshes[i];
+		if (!is_triangle_mesh(m))
+			continue;
+		for (unsigned j = 0; j < m->mNumVertices; j++) {
+			const struct aiVector3D p = m->mVertices[j];
+			double *v = out->vertices[base + j];
+			v[0] = p.x, v[1] = p.y, v[2] = p.z;
+			if (keep_normals) {
+				/* renormalised in double: a file's normals need not be unit, and
+				 * assimp's float ones are unit only to about 1e-7 */
+				const struct aiVector3D q = m->mNormals[j];
+				double len = sqrt((double)q.x * q.x + (double)q.y * q.y + (double)q.z * q.z);
+				double *n = out->normals[base + j];
+				n[0] = q.x / len, n[1] = q.y / len, n[2] = q.z / len;
+			}
+		}
+		for (unsigned j = 0; j < m->mNumFaces; j++) {
+			const struct aiFace *face = &m->mFaces[j];
+			if (face->mNumIndices != 3)
+				continue;
+			for (int k = 0; k < 3; k++)
+				out->faces[f][k] = (uint32_t)(base + face->mIndices[k]);
+			f++;
+		}
+		base += m->mNumVertices;
+	}
+	out->nvertices = nv;
+	out->nnormals = keep_normals ? nv : 0;
+	out->nfaces = nf;
+}
+
+int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errlen)
+{
+	memset(out, 0, sizeof *out);
+	if (check_file(path, err, errlen))
+		return 1;
+	const struct aiScene *sc = import(path, false, err, errlen);
+	if (!sc)
+		return 1;
+	enum normals normals = classify_normals(sc);
+	if (normals == NORMALS_BROKEN) {
+		/* Import again without normals: the corners that differed only by their
+		 * normals then join, and smoothing runs across them. */
+		aiReleaseImport(sc);
+		if (!(sc = import(path, true, err, errlen)))
+			return 1;
+		normals = NORMALS_NONE;
+	}
+
+	/* Indices are 32-bit. assimp's are per mesh, so only the sum can overflow. */
+	size_t nv = 0;
+	for (unsigned i = 0; i < sc->mNumMeshes; i++)
+		if (is_triangle_mesh(sc->mMeshes[i]))
+			nv += sc->mMeshes[i]->mNumVertices;
+	if (nv > UINT32_MAX) {
+		aiReleaseImport(sc);
+		return fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
+		            (unsigned long)UINT32_MAX);
+	}
+	copy_scene(sc, normals == NORMALS_USABLE, out);
+	aiReleaseImport(sc);
+	if (out->nfaces == 0)
+		return fail(err, errlen, "no triangles in '%s'", path);
+	return 0;
+}
+
+void mesh_data_free(struct mesh_data *m)
+{
+	free(m->vertices);
+	free(m->normals);
+	free(m->faces);
+	memset(m, 0, sizeof *m);
+}

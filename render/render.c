@@ -1,0 +1,199 @@
+/* render.c: the render loop, written once: worker threads take 16x16 tiles from a shared
+ * counter, and every pixel's value depends only on the pixel and its samples, so the
+ * image is the same whatever the thread count or tile order. No locks per pixel. */
+#include "render.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "camera.h"
+#include "sampler.h"
+#include "xalloc.h"
+
+enum { TILE = 16 };
+
+struct job {
+	const struct scene *sc;
+	const struct sampler *proto;   /* each worker samples through a clone of it */
+	const struct render_options *opt;
+	struct image *img;
+	int tiles_x, ntiles;
+	atomic_int next_tile;
+	atomic_int done_tiles;
+};
+
+struct worker {
+	pthread_t thread;
+	struct job *job;
+	struct ray_stats stats;
+	double error_var;              /* sum over its pixels of the variance of each pixel's mean */
+};
+
+/* Samples before an adaptive pixel may stop: fewer give too rough a variance estimate
+ * (two samples that happen to agree on an edge pixel would end it). */
+enum { MIN_ADAPTIVE = 8 };
+
+/* The ray of sample i of pixel (px, py) at image-plane offset (sx, sy). */
+static struct ray sample_ray(const struct camera *cam, const struct sampler *sm, int px, int py, int i,
+                             double sx, double sy)
+{
+	double u = (px + sx) / cam->width, v = (py + sy) / cam->height;
+	int a, b, g;
+	if (sampler_grid_cell(sm, i, &a, &b, &g)) {
+		/* as the POV-Ray twin (a render at g times the size) computes it, so that no
+		 * silhouette sub-sample rounds the other way */
+		u = (g * (double)px + a + 0.5) / (g * (double)cam->width);
+		v = (g * (double)py + b + 0.5) / (g * (double)cam->height);
+	}
+	return camera_ray(cam, u, v);
+}
+
+/* One pixel: the mean of its samples (Welford's running mean and variance), stopping
+ * early once the standard error of every channel is below the target. Adds the
+ * variance of the pixel's mean to *error_var, for the image's error estimate. */
+static struct vec3 render_pixel(const struct scene *sc, struct sampler *sm, double *xy, int px, int py,
+                                struct ray_stats *st, double *error_var)
+{
+	const struct sampling *sp = &sc->sampling;
+	sampler_pixel(sm, (uint32_t)px, (uint32_t)py, xy);
+	struct vec3 mean = v3s(0), m2 = v3s(0);
+	int k = 0;
+	for (int i = 0; i < sp->count; i++) {
+		struct ray r = sample_ray(&sc->camera, sm, px, py, i, xy[2 * i], xy[2 * i + 1]);
+		st->camera++;
+		struct vec3 c = trace_ray(sc, &r, 1, st);
+		if (!isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z)) {
+			st->nonfinite++; /* counted, shown by --stats, and kept out of the image */
+			continue;
+		}
+		k++;
+		struct vec3 delta = vsub(c, mean);
+		mean = vadd(mean, vscale(delta, 1.0 / k));
+		m2 = vadd(m2, vmul(delta, vsub(c, mean)));
+		if (sp->target_error > 0 && k >= MIN_ADAPTIVE && i + 1 < sp->count) {
+			double se2 = vmaxc(m2) / ((double)(k - 1) * k);
+			if (se2 < sp->target_error * sp->target_error)
+				break;
+		}
+	}
+	if (k > 1)
+		*error_var += (m2.x + m2.y + m2.z) / ((double)(k - 1) * k * 3);
+	return mean;
+}
+
+static void render_tile(struct job *job, struct sampler *sm, double *xy, int tile, struct ray_stats *st,
+                        double *error_var)
+{
+	const struct render_options *opt = job->opt;
+	int tx = opt->x0 + (tile % job->tiles_x) * TILE, ty = opt->y0 + (tile / job->tiles_x) * TILE;
+	for (int py = ty; py < ty + TILE && py < opt->y1; py++)
+		for (int px = tx; px < tx + TILE && px < opt->x1; px++) {
+			struct vec3 c = render_pixel(job->sc, sm, xy, px, py, st, error_var);
+			float *out = &job->img->rgb[3 * ((size_t)(py - opt->y0) * (size_t)job->img->width + (size_t)(px - opt->x0))];
+			out[0] = (float)c.x;
+			out[1] = (float)c.y;
+			out[2] = (float)c.z;
+		}
+}
+
+static void *work(void *arg)
+{
+	struct worker *w = arg;
+	struct job *job = w->job;
+	struct sampler *sm = sampler_clone(job->proto);
+	double *xy = xmalloc(2 * (size_t)job->sc->sampling.count * sizeof *xy);
+	for (;;) {
+		int tile = atomic_fetch_add(&job->next_tile, 1);
+		if (tile >= job->ntiles)
+			break;
+		render_tile(job, sm, xy, tile, &w->stats, &w->error_var);
+		atomic_fetch_add(&job->done_tiles, 1);
+	}
+	free(xy);
+	sampler_free(sm);
+	return NULL;
+}
+
+static double now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static void show_progress(int done, int total, double elapsed)
+{
+	enum { WIDTH = 30 };
+	double f = total ? (double)done / total : 1;
+	int bar = (int)(f * WIDTH);
+	char line[WIDTH + 1];
+	memset(line, '#', (size_t)bar);
+	memset(line + bar, '.', (size_t)(WIDTH - bar));
+	line[WIDTH] = '\0';
+	if (done > 0 && done < total)
+		fprintf(stderr, "\r[%s] %3.0f%%  ETA %.0fs ", line, 100 * f, elapsed * (1 - f) / f);
+	else
+		fprintf(stderr, "\r[%s] %3.0f%%  %.1fs   ", line, 100 * f, elapsed);
+}
+
+int render_image(const struct scene *sc, const struct render_options *opt, struct image *img, struct ray_stats *st)
+{
+	struct job job = { .sc = sc, .opt = opt, .img = img };
+	struct sampler *proto = sampler_new(&sc->sampling);
+	job.proto = proto;
+	job.tiles_x = (opt->x1 - opt->x0 + TILE - 1) / TILE;
+	job.ntiles = job.tiles_x * ((opt->y1 - opt->y0 + TILE - 1) / TILE);
+	atomic_init(&job.next_tile, 0);
+	atomic_init(&job.done_tiles, 0);
+	int nthreads = opt->threads > 0 ? opt->threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
+	if (nthreads < 1)
+		nthreads = 1;
+	if (nthreads > job.ntiles && job.ntiles > 0)
+		nthreads = job.ntiles;
+	struct worker *workers = xcalloc((size_t)nthreads, sizeof *workers);
+	int started = 0;
+	for (int i = 0; i < nthreads; i++) {
+		workers[i].job = &job;
+		if (pthread_create(&workers[i].thread, NULL, work, &workers[i]) != 0)
+			break;
+		started++;
+	}
+	if (started == 0) {
+		free(workers);
+		sampler_free(proto);
+		return -1;
+	}
+	if (opt->progress) {
+		double t0 = now();
+		while (atomic_load(&job.done_tiles) < job.ntiles) {
+			show_progress(atomic_load(&job.done_tiles), job.ntiles, now() - t0);
+			nanosleep(&(struct timespec){ 0, 200 * 1000 * 1000 }, NULL);
+		}
+		show_progress(job.ntiles, job.ntiles, now() - t0);
+		fputc('\n', stderr);
+	}
+	memset(st, 0, sizeof *st);
+	double error_var = 0;
+	for (int i = 0; i < started; i++) {
+		error_var += workers[i].error_var;
+		pthread_join(workers[i].thread, NULL);
+		st->camera += workers[i].stats.camera;
+		st->shadow += workers[i].stats.shadow;
+		st->reflection += workers[i].stats.reflection;
+		st->refraction += workers[i].stats.refraction;
+		st->nonfinite += workers[i].stats.nonfinite;
+	}
+	/* which worker rendered which tile varies from run to run, so this sum may differ
+	 * in its last bits: it is reported, never written into the image */
+	size_t npixels = (size_t)(opt->x1 - opt->x0) * (size_t)(opt->y1 - opt->y0);
+	st->estimated_rmse = sc->sampling.count > 1 ? sqrt(error_var / (double)npixels) : 0;
+	free(workers);
+	sampler_free(proto);
+	return 0;
+}

@@ -1,0 +1,207 @@
+/* shape.c: ray intersection, robust without user-tuned epsilons:
+ *  - spheres: Hearn-Baker discriminant and stable roots (Haines, Guenther and
+ *    Akenine-Moeller, "Precision Improvements for Ray/Sphere Intersection", Ray Tracing
+ *    Gems ch. 7, 2019);
+ *  - triangles: the watertight test of Woop, Benthin and Wald (JCGT 2(1), 2013), with
+ *    pbrt-v3's conservative t > 0 check;
+ *  - hit points from the primitive with pbrt's error bounds (PBRT 3rd ed. section 3.9). */
+#include "shape.h"
+
+#include <float.h>
+#include <math.h>
+
+/* Roots of |o + t d - c| = r with unit d, in increasing order; false when the ray
+ * misses the sphere. */
+static bool sphere_roots(const struct sphere *s, const struct ray *r, double *t0, double *t1)
+{
+	struct vec3 f = vsub(r->o, s->center);
+	double b = vdot(f, r->d);
+	/* r^2 - |f - (f.d) d|^2: the squared half-chord, free of the cancellation in
+	 * b^2 - (f.f - r^2) when the sphere is small or far */
+	struct vec3 perp = vsub(f, vscale(r->d, b));
+	double disc = s->radius * s->radius - vdot(perp, perp);
+	if (disc < 0)
+		return false;
+	double c = vdot(f, f) - s->radius * s->radius;
+	double q = -(b + copysign(sqrt(disc), b));
+	if (q == 0)
+		return false; /* origin on the sphere and the ray tangent to it */
+	double a = c / q, z = q;
+	*t0 = a < z ? a : z;
+	*t1 = a < z ? z : a;
+	return true;
+}
+
+bool ray_sphere(const struct sphere *s, const struct ray *r, struct hit *h)
+{
+	double t0, t1;
+	if (!sphere_roots(s, r, &t0, &t1))
+		return false;
+	double t = t0 > 0 ? t0 : t1;
+	if (!(t > 0 && t < h->t))
+		return false;
+	h->t = t;
+	return true;
+}
+
+int ray_sphere_crossings(const struct sphere *s, const struct ray *r, double tmax, double t[2])
+{
+	double t0, t1;
+	int n = 0;
+	if (!sphere_roots(s, r, &t0, &t1))
+		return 0;
+	if (t0 > 0 && t0 < tmax)
+		t[n++] = t0;
+	if (t1 > 0 && t1 < tmax && t1 != t0)
+		t[n++] = t1;
+	return n;
+}
+
+bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h)
+{
+	double denom = vdot(pl->normal, r->d);
+	if (denom == 0)
+		return false; /* parallel: a miss, not a NaN (NUMERICS.md section 7) */
+	double t = (pl->offset - vdot(pl->normal, r->o)) / denom;
+	if (!(t > 0 && t < h->t))
+		return false;
+	h->t = t;
+	return true;
+}
+
+static int max_axis(struct vec3 v)
+{
+	return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2);
+}
+
+static struct vec3 permute(struct vec3 v, int kx, int ky, int kz)
+{
+	return v3(vget(v, kx), vget(v, ky), vget(v, kz));
+}
+
+bool ray_triangle(const struct scene *sc, const struct triangle *tri, const struct ray *r, struct hit *h)
+{
+	/* Translate to the ray origin, permute so that z is the ray's largest axis, and
+	 * shear so that the ray is the +z axis: the edge functions then depend only on 2-D
+	 * coordinates, and an edge shared by two triangles gives both the same values. */
+	int kz = max_axis(vabs(r->d));
+	int kx = kz == 2 ? 0 : kz + 1;
+	int ky = kx == 2 ? 0 : kx + 1;
+	struct vec3 d = permute(r->d, kx, ky, kz);
+	struct vec3 p0 = permute(vsub(sc->vertices[tri->v[0]], r->o), kx, ky, kz);
+	struct vec3 p1 = permute(vsub(sc->vertices[tri->v[1]], r->o), kx, ky, kz);
+	struct vec3 p2 = permute(vsub(sc->vertices[tri->v[2]], r->o), kx, ky, kz);
+	double sx = -d.x / d.z, sy = -d.y / d.z, sz = 1 / d.z;
+	p0.x += sx * p0.z;
+	p0.y += sy * p0.z;
+	p1.x += sx * p1.z;
+	p1.y += sy * p1.z;
+	p2.x += sx * p2.z;
+	p2.y += sy * p2.z;
+
+	double e0 = p1.x * p2.y - p1.y * p2.x;
+	double e1 = p2.x * p0.y - p2.y * p0.x;
+	double e2 = p0.x * p1.y - p0.y * p1.x;
+	if (e0 == 0 || e1 == 0 || e2 == 0) {
+		/* exactly on an edge in double: decide it in extended precision */
+		long double X0 = p0.x, Y0 = p0.y, X1 = p1.x, Y1 = p1.y, X2 = p2.x, Y2 = p2.y;
+		e0 = (double)(X1 * Y2 - Y1 * X2);
+		e1 = (double)(X2 * Y0 - Y2 * X0);
+		e2 = (double)(X0 * Y1 - Y0 * X1);
+	}
+	if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0))
+		return false;
+	double det = e0 + e1 + e2;
+	if (det == 0)
+		return false;
+
+	p0.z *= sz;
+	p1.z *= sz;
+	p2.z *= sz;
+	double tscaled = e0 * p0.z + e1 * p1.z + e2 * p2.z;
+	if (det < 0 && (tscaled >= 0 || tscaled < h->t * det))
+		return false;
+	if (det > 0 && (tscaled <= 0 || tscaled > h->t * det))
+		return false;
+	double inv = 1 / det;
+	double t = tscaled * inv;
+
+	/* pbrt-v3: make sure t is conservatively greater than zero, given the rounding
+	 * errors of everything above */
+	double max_z = vmaxc(vabs(v3(p0.z, p1.z, p2.z)));
+	double delta_z = err_gamma(3) * max_z;
+	double max_x = vmaxc(vabs(v3(p0.x, p1.x, p2.x)));
+	double max_y = vmaxc(vabs(v3(p0.y, p1.y, p2.y)));
+	double delta_x = err_gamma(5) * (max_x + max_z);
+	double delta_y = err_gamma(5) * (max_y + max_z);
+	double delta_e = 2 * (err_gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+	double max_e = vmaxc(vabs(v3(e0, e1, e2)));
+	double delta_t = 3 * (err_gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * fabs(inv);
+	if (!(t > delta_t && t < h->t))
+		return false;
+	h->t = t;
+	h->b1 = e1 * inv;
+	h->b2 = e2 * inv;
+	return true;
+}
+
+void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h, struct surface_point *sp)
+{
+	switch (prim_kind(h->prim)) {
+	case PRIM_SPHERE: {
+		const struct sphere *s = &sc->spheres[prim_index(h->prim)];
+		struct vec3 p = vmad(r->o, h->t, r->d);
+		struct vec3 rel = vsub(p, s->center);
+		double len = vlen(rel);
+		/* re-project onto the surface: the error no longer grows with t */
+		rel = len > 0 ? vscale(rel, s->radius / len) : v3(0, s->radius, 0);
+		sp->p = vadd(s->center, rel);
+		sp->p_err = vadd(vscale(vabs(rel), err_gamma(5)), vscale(vabs(sp->p), err_gamma(2)));
+		sp->ng = vscale(rel, 1 / s->radius);
+		sp->ns = sp->ng;
+		break;
+	}
+	case PRIM_PLANE: {
+		const struct plane *pl = &sc->planes[prim_index(h->prim)];
+		struct vec3 p = vmad(r->o, h->t, r->d);
+		/* project onto the plane: exact for axis-aligned planes */
+		sp->p = vsub(p, vscale(pl->normal, vdot(pl->normal, p) - pl->offset));
+		sp->p_err = vscale(vadd(vabs(sp->p), v3s(fabs(pl->offset))), err_gamma(7));
+		sp->ng = pl->normal;
+		sp->ns = pl->normal;
+		break;
+	}
+	case PRIM_TRIANGLE: {
+		const struct triangle *tri = &sc->triangles[prim_index(h->prim)];
+		struct vec3 a = sc->vertices[tri->v[0]], b = sc->vertices[tri->v[1]], c = sc->vertices[tri->v[2]];
+		double b0 = 1 - h->b1 - h->b2;
+		struct vec3 wa = vscale(a, b0), wb = vscale(b, h->b1), wc = vscale(c, h->b2);
+		sp->p = vadd(vadd(wa, wb), wc);
+		sp->p_err = vscale(vadd(vadd(vabs(wa), vabs(wb)), vabs(wc)), err_gamma(7));
+		sp->ng = vnorm(vcross(vsub(b, a), vsub(c, a)));
+		if (tri->n[0] == NO_NORMALS) {
+			sp->ns = sp->ng;
+		} else {
+			struct vec3 n = vadd(vadd(vscale(sc->normals[tri->n[0]], b0), vscale(sc->normals[tri->n[1]], h->b1)),
+			                     vscale(sc->normals[tri->n[2]], h->b2));
+			double len = vlen(n);
+			sp->ns = len > 0 ? vscale(n, 1 / len) : sp->ng;
+		}
+		break;
+	}
+	}
+}
+
+struct vec3 offset_origin(const struct surface_point *sp, struct vec3 w)
+{
+	double dist = vdot(vabs(sp->ng), sp->p_err);
+	struct vec3 off = vscale(sp->ng, dist);
+	if (vdot(w, sp->ng) < 0)
+		off = vneg(off);
+	struct vec3 o = vadd(sp->p, off);
+	/* round away from the surface: the sum above may have rounded towards it */
+	o.x = off.x > 0 ? nextafter(o.x, INFINITY) : off.x < 0 ? nextafter(o.x, -INFINITY) : o.x;
+	o.y = off.y > 0 ? nextafter(o.y, INFINITY) : off.y < 0 ? nextafter(o.y, -INFINITY) : o.y;
+	o.z = off.z > 0 ? nextafter(o.z, INFINITY) : off.z < 0 ? nextafter(o.z, -INFINITY) : o.z;
+	return o;
+}

@@ -1,0 +1,61 @@
+/* shape.h: ray intersection with spheres, planes and triangles, robust in double
+ * precision (NUMERICS.md sections 2, 4, 5, 7), and the offset rule for spawned rays. */
+#ifndef SCN_SHAPE_H
+#define SCN_SHAPE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "scene.h"
+#include "vec.h"
+
+struct ray {
+	struct vec3 o, d;              /* d is a unit vector */
+};
+
+/* Primitive ids: spheres, triangles and planes share one number space. */
+#define PRIM_KIND_SHIFT 30
+enum prim_kind { PRIM_SPHERE = 0, PRIM_TRIANGLE = 1, PRIM_PLANE = 2 };
+static inline uint32_t prim_id(enum prim_kind k, uint32_t index) { return (uint32_t)k << PRIM_KIND_SHIFT | index; }
+static inline enum prim_kind prim_kind(uint32_t id) { return (enum prim_kind)(id >> PRIM_KIND_SHIFT); }
+static inline uint32_t prim_index(uint32_t id) { return id & ((1u << PRIM_KIND_SHIFT) - 1); }
+
+struct hit {
+	double t;
+	uint32_t prim;
+	double b1, b2;                 /* triangle: barycentric weights of vertices 1 and 2 */
+};
+
+/* The surface at a hit, computed from the primitive rather than from o + t d, whose
+ * error grows with t. */
+struct surface_point {
+	struct vec3 p;
+	struct vec3 p_err;             /* bound on the absolute error of each coordinate of p */
+	struct vec3 ng;                /* unit geometric normal: outward (sphere), as defined (plane, triangle) */
+	struct vec3 ns;                /* unit shading normal (interpolated on smooth triangles) */
+};
+
+/* gamma(n) of pbrt: a bound on the relative error of n roundings. */
+static inline double err_gamma(int n)
+{
+	const double u = 0x1p-53;
+	return n * u / (1 - n * u);
+}
+
+/* Each test reports a hit with 0 < t < h->t by updating h; true when it did. */
+bool ray_sphere(const struct sphere *s, const struct ray *r, struct hit *h);
+bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h);
+bool ray_triangle(const struct scene *sc, const struct triangle *tri, const struct ray *r, struct hit *h);
+
+/* Every t in (0, tmax) at which r crosses the sphere (0, 1 or 2 values); for the
+ * shadow filter, which counts each crossing. */
+int ray_sphere_crossings(const struct sphere *s, const struct ray *r, double tmax, double t[2]);
+
+void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h, struct surface_point *sp);
+
+/* The origin for a ray leaving sp in direction w: moved off the surface by the hit
+ * point's error bound, to the side w goes to, then one ulp further (pbrt's
+ * OffsetRayOrigin). A ray from there cannot re-hit the surface at t > 0 by rounding. */
+struct vec3 offset_origin(const struct surface_point *sp, struct vec3 w);
+
+#endif

@@ -1,0 +1,205 @@
+/* trace.c: the Whitted integrator of LANGUAGE.md ("Shading"): emission, Blinn-Phong
+ * from each light through filtered hard shadows, mirror reflection, refraction with
+ * POV-Ray's total internal reflection rule and optional Fresnel split, and the sky.
+ * A ray is spawned only for a term whose weight is not zero. */
+#include "trace.h"
+
+#include <math.h>
+
+#include "bvh.h"
+
+struct vec3 sky_radiance(const struct sky *sky, struct vec3 d)
+{
+	switch (sky->kind) {
+	case SKY_BLACK:
+		return v3s(0);
+	case SKY_CONSTANT:
+		return sky->color;
+	case SKY_ZENITH_HORIZON: {
+		double t = d.y < 0 ? 0 : d.y > 1 ? 1 : d.y;
+		return vadd(vscale(sky->horizon, 1 - t), vscale(sky->color, t));
+	}
+	case SKY_LATLONG: {
+		/* POV-Ray's spherical map_type 1 with interpolate 2 (povray-equivalence.md
+		 * section 9): rotate, then u from atan2(z, x), w from asin(y); bilinear between
+		 * texel centres, wrapping both ways */
+		double x = d.x * sky->rot_cos - d.z * sky->rot_sin;
+		double z = d.x * sky->rot_sin + d.z * sky->rot_cos;
+		double y = d.y < -1 ? -1 : d.y > 1 ? 1 : d.y;
+		double u = atan2(z, x) / (2 * M_PI);
+		u -= floor(u);
+		double w = 0.5 - asin(y) / M_PI;
+		int W = sky->width, H = sky->height;
+		double fx = u * W - 0.5, fy = w * H - 0.5;
+		double x0 = floor(fx), y0 = floor(fy);
+		double ax = fx - x0, ay = fy - y0;
+		long ix0 = (long)x0, iy0 = (long)y0;
+		struct vec3 acc = v3s(0);
+		for (int k = 0; k < 4; k++) {
+			long ix = ix0 + (k & 1), iy = iy0 + (k >> 1);
+			ix = ((ix % W) + W) % W;
+			iy = ((iy % H) + H) % H;
+			const float *t = &sky->texels[3 * ((size_t)iy * (size_t)W + (size_t)ix)];
+			double wgt = ((k & 1) ? ax : 1 - ax) * ((k >> 1) ? ay : 1 - ay);
+			acc = vadd(acc, vscale(v3(t[0], t[1], t[2]), wgt));
+		}
+		return vscale(acc, sky->intensity);
+	}
+	}
+	return v3s(0);
+}
+
+static uint32_t surface_of(const struct scene *sc, uint32_t prim)
+{
+	uint32_t i = prim_index(prim);
+	switch (prim_kind(prim)) {
+	case PRIM_SPHERE: return sc->spheres[i].surface;
+	case PRIM_TRIANGLE: return sc->triangles[i].surface;
+	default: return sc->planes[i].surface;
+	}
+}
+
+static struct vec3 apply_affine(const struct affine *a, struct vec3 p)
+{
+	return v3(a->m[0][0] * p.x + a->m[0][1] * p.y + a->m[0][2] * p.z + a->m[0][3],
+	          a->m[1][0] * p.x + a->m[1][1] * p.y + a->m[1][2] * p.z + a->m[1][3],
+	          a->m[2][0] * p.x + a->m[2][1] * p.y + a->m[2][2] * p.z + a->m[2][3]);
+}
+
+/* k_d at p: a checker is evaluated in the object's own space, with POV-Ray's 1e-10
+ * bias so that points a rounding error below a cell boundary count as above it. */
+static struct vec3 diffuse_at(const struct scene *sc, const struct surface *srf, const struct material *m,
+                              struct vec3 p)
+{
+	if (!m->checker)
+		return m->diffuse;
+	if (srf->to_object >= 0)
+		p = apply_affine(&sc->affines[srf->to_object], p);
+	double s = m->checker_size;
+	double sum = floor(p.x / s + 1e-10) + floor(p.y / s + 1e-10) + floor(p.z / s + 1e-10);
+	return fmod(sum, 2) == 0 ? m->diffuse : m->diffuse2;
+}
+
+/* Unpolarised dielectric reflectance for relative index eta = n_t / n_i at incidence
+ * cosine c (the exact form POV-Ray uses); 1 past the critical angle. */
+static double fresnel(double eta, double c)
+{
+	double g2 = eta * eta + c * c - 1;
+	if (g2 < 0)
+		return 1;
+	double g = sqrt(g2);
+	double a = (g - c) / (g + c);
+	double b = (c * (g + c) - 1) / (c * (g - c) + 1);
+	return 0.5 * a * a * (1 + b * b);
+}
+
+static bool any_positive(struct vec3 v)
+{
+	return v.x > 0 || v.y > 0 || v.z > 0;
+}
+
+/* Direct light at sp from every light, seen along v with facing normal n. */
+static struct vec3 direct_light(const struct scene *sc, const struct surface_point *sp, struct vec3 n,
+                                struct vec3 v, struct vec3 kd, const struct material *m, struct ray_stats *st)
+{
+	struct vec3 sum = v3s(0);
+	for (size_t i = 0; i < sc->nlights; i++) {
+		const struct light *li = &sc->lights[i];
+		struct vec3 l;
+		double dist = INFINITY;
+		if (li->kind == LIGHT_POINT) {
+			struct vec3 to = vsub(li->pos, sp->p);
+			dist = vlen(to);
+			if (dist == 0)
+				continue; /* a light on the point itself has no direction */
+			l = vscale(to, 1 / dist);
+		} else {
+			l = li->to_light;
+		}
+		double ndotl = vdot(n, l);
+		if (!(ndotl > 0))
+			continue;
+		struct vec3 color = li->color;
+		if (!li->shadowless) {
+			/* a segment from just off the surface to the light: relative end, so the
+			 * light itself needs no tolerance (NUMERICS.md section 3) */
+			struct ray shadow = { offset_origin(sp, l), l };
+			double tmax = INFINITY;
+			if (li->kind == LIGHT_POINT) {
+				struct vec3 to = vsub(li->pos, shadow.o);
+				tmax = vlen(to) * (1 - 1e-9);
+				if (!(tmax > 0))
+					continue;
+				shadow.d = vscale(to, 1 / vlen(to));
+			}
+			st->shadow++;
+			color = vmul(color, bvh_transmittance(sc->bvh, sc, &shadow, tmax));
+			if (vzero(color))
+				continue;
+		}
+		struct vec3 term = vscale(kd, ndotl);
+		if (!li->shadowless && any_positive(m->specular)) {
+			double ndoth = vdot(n, vnorm(vadd(l, v)));
+			if (ndoth > 0)
+				term = vadd(term, vscale(m->specular, pow(ndoth, m->shininess)));
+		}
+		sum = vadd(sum, vmul(color, term));
+	}
+	return sum;
+}
+
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
+{
+	struct hit h = { .t = INFINITY };
+	if (!bvh_intersect(sc->bvh, sc, r, &h))
+		return sky_radiance(&sc->sky, r->d);
+	struct surface_point sp;
+	surface_at(sc, r, &h, &sp);
+	const struct surface *srf = &sc->surfaces[surface_of(sc, h.prim)];
+	const struct material *m = &sc->materials[srf->material];
+
+	/* the shading normal turned towards the viewer; inside or outside from the
+	 * geometric normal */
+	bool entering = vdot(r->d, sp.ng) < 0;
+	struct vec3 n = vdot(sp.ns, r->d) > 0 ? vneg(sp.ns) : sp.ns;
+	struct vec3 v = vneg(r->d);
+	struct vec3 color = m->emit;
+	if (sc->nlights)
+		color = vadd(color, direct_light(sc, &sp, n, v, diffuse_at(sc, srf, m, sp.p), m, st));
+	if (depth >= sc->max_depth)
+		return color;
+
+	struct vec3 kr = m->reflect, kt = m->transmit;
+	double cos_i = vdot(v, n);
+	if (cos_i > 1)
+		cos_i = 1;
+	struct vec3 mirror = vsub(r->d, vscale(n, 2 * vdot(r->d, n)));
+	if (any_positive(kt) || m->fresnel) {
+		double eta = entering ? 1 / m->ior : m->ior; /* n_i / n_t */
+		double k = 1 - eta * eta * (1 - cos_i * cos_i);
+		if (k < 0 && any_positive(kt)) {
+			/* total internal reflection: POV-Ray traces the mirror ray with weight 1
+			 * in place of both terms */
+			struct ray rr = { offset_origin(&sp, mirror), vnorm(mirror) };
+			st->reflection++;
+			return vadd(color, trace_ray(sc, &rr, depth + 1, st));
+		}
+		if (m->fresnel) {
+			double f = fresnel(1 / eta, cos_i);
+			kt = vmul(vsub(v3s(1), vscale(kr, f)), kt);
+			kr = vscale(kr, f);
+		}
+		if (any_positive(kt)) {
+			struct vec3 w = vadd(vscale(r->d, eta), vscale(n, eta * cos_i - sqrt(k)));
+			struct ray rt = { offset_origin(&sp, w), vnorm(w) };
+			st->refraction++;
+			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, st)));
+		}
+	}
+	if (any_positive(kr)) {
+		struct ray rr = { offset_origin(&sp, mirror), vnorm(mirror) };
+		st->reflection++;
+		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, st)));
+	}
+	return color;
+}

@@ -1,0 +1,24 @@
+/* trace.h: the Whitted integrator: the colour a ray sees. */
+#ifndef SCN_TRACE_H
+#define SCN_TRACE_H
+
+#include <stdint.h>
+
+#include "scene.h"
+#include "shape.h"
+
+/* Rays by kind and values that were not finite: counted per thread, summed at the end. */
+struct ray_stats {
+	uint64_t camera, shadow, reflection, refraction;
+	uint64_t nonfinite;            /* radiance samples that were NaN or infinite (must stay 0) */
+	double estimated_rmse;         /* of the image, from each pixel's sample variance (render_image) */
+};
+
+/* The colour seen along r (unit direction) by a ray of the given depth (a camera ray
+ * has depth 1), per LANGUAGE.md's shading model. */
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st);
+
+/* What a ray that hits nothing sees in direction d (unit). */
+struct vec3 sky_radiance(const struct sky *sky, struct vec3 d);
+
+#endif

@@ -1,0 +1,37 @@
+/* vec.h: double-precision 3-vectors for geometry and colour (NUMERICS.md section 1:
+ * everything geometric is double). */
+#ifndef SCN_VEC_H
+#define SCN_VEC_H
+
+#include <math.h>
+
+struct vec3 {
+	double x, y, z;
+};
+
+static inline struct vec3 v3(double x, double y, double z) { return (struct vec3){ x, y, z }; }
+static inline struct vec3 v3s(double s) { return (struct vec3){ s, s, s }; }
+static inline struct vec3 v3a(const double a[3]) { return (struct vec3){ a[0], a[1], a[2] }; }
+static inline struct vec3 vadd(struct vec3 a, struct vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline struct vec3 vsub(struct vec3 a, struct vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline struct vec3 vmul(struct vec3 a, struct vec3 b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
+static inline struct vec3 vscale(struct vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline struct vec3 vneg(struct vec3 a) { return v3(-a.x, -a.y, -a.z); }
+static inline struct vec3 vabs(struct vec3 a) { return v3(fabs(a.x), fabs(a.y), fabs(a.z)); }
+static inline double vdot(struct vec3 a, struct vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline struct vec3 vcross(struct vec3 a, struct vec3 b)
+{
+	return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double vlen(struct vec3 a) { return sqrt(vdot(a, a)); }
+/* Unit vector along a; a must not be zero. */
+static inline struct vec3 vnorm(struct vec3 a) { return vscale(a, 1 / vlen(a)); }
+static inline struct vec3 vmin(struct vec3 a, struct vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+static inline struct vec3 vmax(struct vec3 a, struct vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+static inline double vget(struct vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+static inline double vmaxc(struct vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+static inline int vzero(struct vec3 a) { return a.x == 0 && a.y == 0 && a.z == 0; }
+/* a + s b */
+static inline struct vec3 vmad(struct vec3 a, double s, struct vec3 b) { return v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z); }
+
+#endif

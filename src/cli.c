@@ -1,0 +1,42 @@
+/* cli.c: helpers for the subcommands' argument parsing. */
+#include "cli.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int cli_usage_error(const struct command *cmd, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	fputs("scn: ", stderr);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\nusage: %s\n", cmd ? cmd->usage : "scn COMMAND [ARGS]; see 'scn --help'");
+	return EXIT_USAGE;
+}
+
+int cli_help(const struct command *cmd)
+{
+	printf("usage: %s\n\n%s", cmd->usage, cmd->help);
+	return 0;
+}
+
+const char *cli_value(int argc, char **argv, int *i)
+{
+	if (*i + 1 >= argc)
+		return NULL;
+	return argv[++*i];
+}
+
+bool cli_int(const char *s, long lo, long hi, long *out)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(s, &end, 10);
+	if (errno || end == s || *end || v < lo || v > hi)
+		return false;
+	*out = v;
+	return true;
+}

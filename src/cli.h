@@ -1,0 +1,31 @@
+/* cli.h: what the subcommands of scn share: exit statuses, the command table entry,
+ * usage errors and option values. */
+#ifndef SCN_CLI_H
+#define SCN_CLI_H
+
+#include <stdbool.h>
+
+enum { EXIT_SCENE = 1, EXIT_USAGE = 2, EXIT_IO = 3, EXIT_RENDER = 4 };
+
+struct command {
+	const char *name;
+	const char *usage;
+	const char *help;
+	int (*run)(const struct command *self, int argc, char **argv);
+};
+
+/* Prints "scn: MESSAGE" and the command's usage line; returns EXIT_USAGE. */
+int cli_usage_error(const struct command *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Prints the command's usage and help to standard output; returns 0. */
+int cli_help(const struct command *cmd);
+/* The value of option argv[*i] (the next argument), advancing *i; NULL when missing. */
+const char *cli_value(int argc, char **argv, int *i);
+/* A whole number in [lo, hi] spelt exactly by s. */
+bool cli_int(const char *s, long lo, long hi, long *out);
+
+int cmd_check(const struct command *self, int argc, char **argv);
+int cmd_render(const struct command *self, int argc, char **argv);
+int cmd_pov(const struct command *self, int argc, char **argv);
+int cmd_diff(const struct command *self, int argc, char **argv);
+
+#endif

@@ -1,0 +1,253 @@
+/* cmd_render.c: scn render: load, apply the command line's overrides, lower, render and
+ * write the image, reporting each phase's time and the rays by kind with --stats. */
+#include "config.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "bvh.h"
+#include "cli.h"
+#include "diag.h"
+#include "image.h"
+#include "load.h"
+#include "lower.h"
+#include "render.h"
+#include "scene_desc.h"
+#include "xalloc.h"
+
+struct render_args {
+	const char *scene, *out;
+	long width, height, samples, depth, threads, seed, bit_depth;
+	int pattern;                       /* -1: the scene's */
+	bool float32, stats, quiet;
+	int progress;                      /* -1: when standard error is a terminal */
+	enum accel accel;
+	bool region;
+	long x0, y0, x1, y1;
+};
+
+static double now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static int parse_args(const struct command *self, int argc, char **argv, struct render_args *a)
+{
+	*a = (struct render_args){ .width = -1, .height = -1, .samples = -1, .depth = -1, .threads = 0,
+	                           .seed = -1, .bit_depth = 8, .pattern = -1, .progress = -1 };
+	for (int i = 1; i < argc; i++) {
+		const char *opt = argv[i], *v;
+		long *target = NULL, lo = 0, hi = 0;
+		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
+			return cli_help(self) - 1;
+		if (strcmp(opt, "--float") == 0) { a->float32 = true; continue; }
+		if (strcmp(opt, "--stats") == 0) { a->stats = true; continue; }
+		if (strcmp(opt, "--progress") == 0) { a->progress = 1; continue; }
+		if (strcmp(opt, "--no-progress") == 0) { a->progress = 0; continue; }
+		if (strcmp(opt, "-q") == 0) { a->quiet = true; continue; }
+		if (opt[0] != '-' || opt[1] == '\0') {
+			if (a->scene)
+				return cli_usage_error(self, "more than one scene given ('%s')", opt);
+			a->scene = opt;
+			continue;
+		}
+		if (strcmp(opt, "-W") == 0) { target = &a->width; lo = 1; hi = 65536; }
+		else if (strcmp(opt, "-H") == 0) { target = &a->height; lo = 1; hi = 65536; }
+		else if (strcmp(opt, "-s") == 0) { target = &a->samples; lo = 1; hi = 65536; }
+		else if (strcmp(opt, "-d") == 0) { target = &a->depth; lo = 1; hi = 256; }
+		else if (strcmp(opt, "-j") == 0) { target = &a->threads; lo = 0; hi = 4096; }
+		else if (strcmp(opt, "--seed") == 0) { target = &a->seed; lo = 0; hi = 0x7fffffffffffffffL; }
+		else if (strcmp(opt, "--bit-depth") == 0) { target = &a->bit_depth; lo = 8; hi = 16; }
+		else if (strcmp(opt, "-o") != 0 && strcmp(opt, "-p") != 0 && strcmp(opt, "--accel") != 0 &&
+		         strcmp(opt, "--region") != 0)
+			return cli_usage_error(self, "unknown option '%s' for render", opt);
+		if (!(v = cli_value(argc, argv, &i)))
+			return cli_usage_error(self, "option '%s' needs a value", opt);
+		if (target) {
+			if (!cli_int(v, lo, hi, target) || (target == &a->bit_depth && *target != 8 && *target != 16))
+				return cli_usage_error(self, "bad value '%s' for %s (%s)", v, opt,
+				                       target == &a->bit_depth ? "8 or 16" : "a whole number in range");
+		} else if (strcmp(opt, "-o") == 0) {
+			a->out = v;
+		} else if (strcmp(opt, "-p") == 0) {
+			a->pattern = -1;
+			for (int p = 0; p < PATTERN_COUNT; p++)
+				if (strcmp(v, pattern_name(p)) == 0)
+					a->pattern = p;
+			if (a->pattern < 0)
+				return cli_usage_error(self, "unknown pattern '%s' (center, grid, random, jittered, poisson)", v);
+		} else if (strcmp(opt, "--accel") == 0) {
+			if (strcmp(v, "bvh") == 0)
+				a->accel = ACCEL_BVH;
+			else if (strcmp(v, "none") == 0)
+				a->accel = ACCEL_NONE;
+			else
+				return cli_usage_error(self, "unknown accelerator '%s' (bvh or none)", v);
+		} else { /* --region */
+			char tail;
+			if (sscanf(v, "%ld,%ld,%ld,%ld%c", &a->x0, &a->y0, &a->x1, &a->y1, &tail) != 4)
+				return cli_usage_error(self, "bad region '%s' (X0,Y0,X1,Y1)", v);
+			a->region = true;
+		}
+	}
+	if (!a->scene)
+		return cli_usage_error(self, "no scene given");
+	return 0;
+}
+
+/* The output's default name: the scene's, with .png. */
+static char *default_output(const char *scene)
+{
+	if (strcmp(scene, "-") == 0)
+		return xstrdup("stdin.png");
+	const char *base = strrchr(scene, '/');
+	base = base ? base + 1 : scene;
+	const char *dot = strrchr(base, '.');
+	size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+	char *out = xmalloc(n + 5);
+	memcpy(out, base, n);
+	memcpy(out + n, ".png", 5);
+	return out;
+}
+
+/* Applies the command line's overrides to the scene; a combination the language would
+ * reject is a usage error. */
+static int override(const struct command *self, const struct render_args *a, struct scene_desc *s)
+{
+	if (a->width > 0)
+		s->camera.width = (int)a->width;
+	if (a->height > 0)
+		s->camera.height = (int)a->height;
+	if ((double)s->camera.width * s->camera.height > (double)IMAGE_MAX_PIXELS)
+		return cli_usage_error(self, "%d x %d is more pixels than the limit of 2^28", s->camera.width,
+		                       s->camera.height);
+	if (a->samples > 0)
+		s->samples.count = (int)a->samples;
+	if (a->pattern >= 0)
+		s->samples.pattern = (enum sample_pattern)a->pattern;
+	else if (!s->samples.pattern_given) /* the default follows the count, as in a scene */
+		s->samples.pattern = s->samples.count == 1 ? PATTERN_CENTER : PATTERN_JITTERED;
+	if (a->depth > 0)
+		s->max_depth = (int)a->depth;
+	if (a->seed >= 0)
+		s->samples.seed = (uint64_t)a->seed;
+	int n = s->samples.count, root = (int)sqrt((double)n);
+	if (s->samples.pattern == PATTERN_CENTER && n != 1)
+		return cli_usage_error(self, "pattern center takes exactly one sample, not %d", n);
+	if (s->samples.pattern == PATTERN_GRID && root * root != n)
+		return cli_usage_error(self, "pattern grid needs a square sample count (1, 4, 9, 16, ...), not %d", n);
+	if (s->samples.pattern == PATTERN_GRID && s->samples.target_error > 0)
+		return cli_usage_error(self, "the scene's target_error needs a random, jittered or poisson pattern, not grid");
+	return 0;
+}
+
+static void print_stats(const struct load_times *lt, const struct lower_times *wt, double bvh_s, double render_s,
+                        double write_s, const struct scene *sc, const struct ray_stats *st)
+{
+	size_t nodes;
+	int depth;
+	bvh_shape(sc->bvh, &nodes, &depth);
+	fprintf(stderr,
+	        "time: parse %.3fs  check %.3fs  evaluate %.3fs  load meshes %.3fs  load images %.3fs  build bvh %.3fs"
+	        "  render %.3fs  write %.3fs\n",
+	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, bvh_s, render_s, write_s);
+	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu lights, %zu materials; bvh %zu nodes, depth %d\n",
+	        sc->nspheres, sc->nplanes, sc->ntriangles, sc->nlights, sc->nmaterials, nodes, depth);
+	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
+	        (unsigned long long)st->camera, (unsigned long long)st->shadow, (unsigned long long)st->reflection,
+	        (unsigned long long)st->refraction,
+	        (unsigned long long)(st->camera + st->shadow + st->reflection + st->refraction));
+	fprintf(stderr, "non-finite radiance values: %llu\n", (unsigned long long)st->nonfinite);
+}
+
+int cmd_render(const struct command *self, int argc, char **argv)
+{
+	struct render_args a;
+	int rc = parse_args(self, argc, argv, &a);
+	if (rc)
+		return rc < 0 ? 0 : rc;
+	char *out = a.out ? xstrdup(a.out) : default_output(a.scene);
+	if (image_format_of(out) < 0) {
+		rc = cli_usage_error(self, "cannot tell the format of '%s' (use .png, .exr or .ppm)", out);
+		free(out);
+		return rc;
+	}
+
+	struct diag d;
+	diag_init(&d, stderr);
+	struct scene_desc desc;
+	struct load_times lt;
+	struct lower_times wt = { 0 };
+	struct scene sc = { 0 };
+	struct image *img = NULL;
+	rc = (int)lang_load_scene(&d, a.scene, &desc, &lt);
+	if (rc == 0)
+		rc = override(self, &a, &desc);
+	if (rc == 0 && !lang_lower(&d, &desc, &sc, &wt))
+		rc = EXIT_SCENE;
+	diag_flush(&d);
+	if (rc)
+		goto done;
+	double t0 = now();
+	sc.bvh = bvh_build(&sc, a.accel);
+	double bvh_s = now() - t0;
+
+	struct render_options ro = { .threads = (int)a.threads, .x0 = 0, .y0 = 0,
+	                             .x1 = sc.camera.width, .y1 = sc.camera.height };
+	if (a.region) {
+		if (a.x0 < 0 || a.y0 < 0 || a.x0 >= a.x1 || a.y0 >= a.y1 || a.x1 > sc.camera.width || a.y1 > sc.camera.height) {
+			rc = cli_usage_error(self, "region %ld,%ld,%ld,%ld is not inside the %d x %d image", a.x0, a.y0, a.x1,
+			                     a.y1, sc.camera.width, sc.camera.height);
+			goto done;
+		}
+		ro.x0 = (int)a.x0, ro.y0 = (int)a.y0, ro.x1 = (int)a.x1, ro.y1 = (int)a.y1;
+	}
+	ro.progress = a.quiet ? false : a.progress >= 0 ? a.progress : isatty(2);
+	img = image_new(ro.x1 - ro.x0, ro.y1 - ro.y0);
+	if (!img) {
+		fprintf(stderr, "scn: cannot allocate a %d x %d image\n", ro.x1 - ro.x0, ro.y1 - ro.y0);
+		rc = EXIT_RENDER;
+		goto done;
+	}
+	struct ray_stats st;
+	t0 = now();
+	if (render_image(&sc, &ro, img, &st) != 0) {
+		fprintf(stderr, "scn: cannot start the render threads\n");
+		rc = EXIT_RENDER;
+		goto done;
+	}
+	double render_s = now() - t0;
+	if (st.nonfinite)
+		fprintf(stderr, "scn: warning: %llu radiance values were not finite and were left out of the image\n",
+		        (unsigned long long)st.nonfinite);
+	char err[512];
+	struct image_write_options wo = { .bit_depth = (int)a.bit_depth, .float32 = a.float32 };
+	t0 = now();
+	if (image_write(img, out, &wo, err, sizeof err) != 0) {
+		fprintf(stderr, "scn: %s\n", err);
+		rc = EXIT_IO;
+		goto done;
+	}
+	if (a.stats)
+		print_stats(&lt, &wt, bvh_s, render_s, now() - t0, &sc, &st);
+	if (!a.quiet) {
+		fprintf(stderr, "scn: wrote %s: %d x %d, %d sample%s per pixel, rendered in %.2f s", out, img->width,
+		        img->height, sc.sampling.count, sc.sampling.count == 1 ? "" : "s", render_s);
+		if (sc.sampling.count > 1)
+			fprintf(stderr, "; estimated RMSE %.3g", st.estimated_rmse);
+		fputc('\n', stderr);
+	}
+done:
+	image_free(img);
+	scene_free(&sc);
+	scene_desc_free(&desc);
+	diag_fini(&d);
+	free(out);
+	return rc;
+}

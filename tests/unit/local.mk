@@ -1,0 +1,44 @@
+# tests/unit/local.mk: C unit tests of the renderer's parts; each is a program that
+# exits 0 when every assertion holds (see tests/unit/check.h). Add one as:
+#   check_PROGRAMS += tests/unit/test_NAME
+#   TESTS += tests/unit/test_NAME
+#   tests_unit_test_NAME_SOURCES = tests/unit/test_NAME.c
+#   tests_unit_test_NAME_LDADD = $(RENDER_LIBS)
+check_PROGRAMS += tests/unit/test_mesh_import
+TESTS += tests/unit/test_mesh_import
+tests_unit_test_mesh_import_SOURCES = tests/unit/test_mesh_import.c
+# mesh_import allocates through lang's xalloc
+tests_unit_test_mesh_import_LDADD = $(RENDER_LIBS) lang/libscnlang.a
+EXTRA_DIST += tests/unit/meshes/ascii.ply tests/unit/meshes/bad_index.obj \
+	tests/unit/meshes/bad_number.ply tests/unit/meshes/binary.ply tests/unit/meshes/empty.obj \
+	tests/unit/meshes/garbage.bin tests/unit/meshes/lines.obj tests/unit/meshes/mixed.obj \
+	tests/unit/meshes/nodes.gltf tests/unit/meshes/normals.obj \
+	tests/unit/meshes/partial_normals.obj tests/unit/meshes/quad.obj tests/unit/meshes/square.obj \
+	tests/unit/meshes/truncated.ply
+check_PROGRAMS += tests/unit/test_image
+TESTS += tests/unit/test_image
+tests_unit_test_image_SOURCES = tests/unit/test_image.c
+tests_unit_test_image_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render $(PNG_CFLAGS)
+tests_unit_test_image_LDADD = $(RENDER_LIBS) lang/libscnlang.a
+tests_unit_test_image_CPPFLAGS += $(EXR_CFLAGS)
+check_PROGRAMS += tests/unit/test_sampler
+TESTS += tests/unit/test_sampler
+tests_unit_test_sampler_SOURCES = tests/unit/test_sampler.c
+tests_unit_test_sampler_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
+tests_unit_test_sampler_LDADD = $(RENDER_LIBS)
+check_PROGRAMS += tests/unit/test_bvh
+TESTS += tests/unit/test_bvh
+tests_unit_test_bvh_SOURCES = tests/unit/test_bvh.c
+tests_unit_test_bvh_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
+tests_unit_test_bvh_LDADD = $(RENDER_LIBS)
+check_PROGRAMS += tests/unit/test_shape
+TESTS += tests/unit/test_shape
+tests_unit_test_shape_SOURCES = tests/unit/test_shape.c
+tests_unit_test_shape_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
+tests_unit_test_shape_LDADD = $(RENDER_LIBS)
+EXTRA_DIST += tests/unit/meshes/cut_faces.ply tests/unit/meshes/no_end_header.ply
+check_PROGRAMS += tests/unit/test_imgdiff
+TESTS += tests/unit/test_imgdiff
+tests_unit_test_imgdiff_SOURCES = tests/unit/test_imgdiff.c
+tests_unit_test_imgdiff_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
+tests_unit_test_imgdiff_LDADD = $(RENDER_LIBS)

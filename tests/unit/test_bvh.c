@@ -1,0 +1,733 @@
+/* test_bvh.c: the BVH (render/bvh.c) against brute force. Random scenes are built
+ * directly as struct scene: spheres of random radii down to 1e-6, random triangles
+ * including long thin ones, fans and grids that share edges and vertices, and planes.
+ * For many rays (origins inside and outside the scene, on box faces and on vertices;
+ * random, axis-aligned and +0/-0 directions) three answers must agree:
+ *   ref   a plain loop over every primitive, with no bounding box at all;
+ *   none  bvh_build(ACCEL_NONE): one leaf, through the traversal code;
+ *   bvh   bvh_build(ACCEL_BVH).
+ *
+ * Same t, bitwise or within a few ulps? Each primitive's t is a pure function of the
+ * primitive and the ray, and the closest hit is a minimum over those values, which
+ * involves no arithmetic; the BVH changes only the order of the tests and which
+ * primitives get tested. So when one primitive is closest by a clear margin all three
+ * agree bitwise, and the test demands it. Order can matter only between candidates a
+ * few ulps apart: ray_triangle's early-out compares tscaled against h->t * det, rounded
+ * differently from t = tscaled / det, and a box's entry distance is compared against
+ * h->t with its own rounding. So two answers may differ only when both name different
+ * primitives, each of which alone really is hit at the t reported, and those t are
+ * within NEAR_ULPS ulps of each other (seen: 1 ulp, at edges shared by two triangles,
+ * each of which rounds its own t); TEST_BVH_VERBOSE=1 prints them. Exact ties (shared
+ * vertices, coincident primitives) may name different primitives with the same t.
+ *
+ * Transmittance: each channel is a product of the k_t of the crossed surfaces. The x
+ * and y channels use only powers of two, so every product is exact and must agree
+ * bitwise in any order; the z channel uses other values and agrees to rounding. */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bvh.h"
+#include "check.h"
+#include "scene.h"
+#include "shape.h"
+#include "xalloc.h"
+
+#define NEAR_ULPS 4
+#define PI 3.14159265358979323846
+
+/* ---- random numbers: splitmix64 ---- */
+
+static uint64_t rng_state = 0x5eed;
+
+static uint64_t next_u64(void)
+{
+	uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+	return z ^ (z >> 31);
+}
+
+static double urand(void) { return (double)(next_u64() >> 11) * 0x1p-53; }
+static double urange(double a, double b) { return a + (b - a) * urand(); }
+static int irand(int n) { return (int)(next_u64() % (uint64_t)n); }
+/* log-uniform in [a, b] */
+static double lrand(double a, double b) { return a * pow(b / a, urand()); }
+
+static struct vec3 rand_unit(void)
+{
+	for (;;) {
+		struct vec3 v = v3(urange(-1, 1), urange(-1, 1), urange(-1, 1));
+		double l = vdot(v, v);
+		if (l > 1e-4 && l <= 1)
+			return vscale(v, 1 / sqrt(l));
+	}
+}
+
+static struct vec3 rand_in_box(struct vec3 lo, struct vec3 hi)
+{
+	return v3(urange(lo.x, hi.x), urange(lo.y, hi.y), urange(lo.z, hi.z));
+}
+
+/* ---- building scenes ---- */
+
+enum { NMAT = 6 };
+/* x, y: powers of two (exact products); z: anything */
+static const double transmit_of_mat[NMAT][3] = {
+	{ 0, 0, 0 }, { 1, 1, 1 }, { 0.5, 0.25, 0.3 }, { 0.25, 1, 0.7 }, { 0.5, 0.5, 0.9 }, { 1, 0.5, 0.1 },
+};
+
+struct builder {
+	struct scene sc;
+	size_t cap_s, cap_t, cap_v, cap_p;
+};
+
+static void builder_init(struct builder *b)
+{
+	memset(b, 0, sizeof *b);
+	b->sc.materials = xcalloc(NMAT, sizeof *b->sc.materials);
+	b->sc.surfaces = xcalloc(NMAT, sizeof *b->sc.surfaces);
+	b->sc.nmaterials = b->sc.nsurfaces = NMAT;
+	for (int i = 0; i < NMAT; i++) {
+		b->sc.materials[i].transmit = v3a(transmit_of_mat[i]);
+		b->sc.materials[i].diffuse = v3s(0.8);
+		b->sc.materials[i].ior = 1;
+		b->sc.surfaces[i] = (struct surface){ (uint32_t)i, -1 };
+	}
+	b->sc.max_depth = 5;
+}
+
+/* mostly see-through, so that the shadow filter crosses many surfaces */
+static uint32_t rand_surface(void)
+{
+	return irand(8) == 0 ? 0 : (uint32_t)(1 + irand(NMAT - 1));
+}
+
+static void add_sphere(struct builder *b, struct vec3 c, double r)
+{
+	xgrow((void **)&b->sc.spheres, &b->cap_s, b->sc.nspheres + 1, sizeof *b->sc.spheres);
+	b->sc.spheres[b->sc.nspheres++] = (struct sphere){ c, r, rand_surface() };
+}
+
+static uint32_t add_vertex(struct builder *b, struct vec3 v)
+{
+	xgrow((void **)&b->sc.vertices, &b->cap_v, b->sc.nvertices + 1, sizeof *b->sc.vertices);
+	b->sc.vertices[b->sc.nvertices] = v;
+	return (uint32_t)b->sc.nvertices++;
+}
+
+static void add_tri_idx(struct builder *b, uint32_t i, uint32_t j, uint32_t k)
+{
+	xgrow((void **)&b->sc.triangles, &b->cap_t, b->sc.ntriangles + 1, sizeof *b->sc.triangles);
+	b->sc.triangles[b->sc.ntriangles++] =
+		(struct triangle){ { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, rand_surface() };
+}
+
+static void add_triangle(struct builder *b, struct vec3 p0, struct vec3 p1, struct vec3 p2)
+{
+	uint32_t i = add_vertex(b, p0), j = add_vertex(b, p1), k = add_vertex(b, p2);
+	add_tri_idx(b, i, j, k);
+}
+
+static void add_plane(struct builder *b, struct vec3 n, double offset)
+{
+	xgrow((void **)&b->sc.planes, &b->cap_p, b->sc.nplanes + 1, sizeof *b->sc.planes);
+	b->sc.planes[b->sc.nplanes++] = (struct plane){ vnorm(n), offset, rand_surface() };
+}
+
+static size_t nprims(const struct scene *sc)
+{
+	return sc->nspheres + sc->ntriangles;
+}
+
+/* A triangle fan of k triangles around a (raised) centre. */
+static void add_fan(struct builder *b, struct vec3 c, double radius, int k)
+{
+	uint32_t ic = add_vertex(b, vadd(c, v3(0, radius * 0.3, 0)));
+	uint32_t first = 0, prev = 0;
+	for (int i = 0; i < k; i++) {
+		double a = 2 * PI * i / k;
+		uint32_t iv = add_vertex(b, vadd(c, v3(radius * cos(a), 0, radius * sin(a))));
+		if (i == 0)
+			first = iv;
+		else
+			add_tri_idx(b, ic, prev, iv);
+		prev = iv;
+	}
+	add_tri_idx(b, ic, prev, first);
+}
+
+/* An n x n grid of quads, each split in two, with random heights: shared edges. */
+static void add_grid(struct builder *b, struct vec3 origin, double cell, int n, bool lattice)
+{
+	uint32_t base = (uint32_t)b->sc.nvertices;
+	for (int j = 0; j <= n; j++)
+		for (int i = 0; i <= n; i++) {
+			double h = lattice ? (double)irand(3) * cell : urange(-0.3, 0.3) * cell;
+			add_vertex(b, vadd(origin, v3(i * cell, h, j * cell)));
+		}
+	for (int j = 0; j < n; j++)
+		for (int i = 0; i < n; i++) {
+			uint32_t v00 = base + (uint32_t)(j * (n + 1) + i), v10 = v00 + 1;
+			uint32_t v01 = v00 + (uint32_t)(n + 1), v11 = v01 + 1;
+			add_tri_idx(b, v00, v10, v11);
+			add_tri_idx(b, v00, v11, v01);
+		}
+}
+
+/* About n bounded primitives of every kind, around the origin within size, moved by
+ * offset. lattice: every coordinate is a multiple of size / 8 and every radius of
+ * size / 16, all exact in float, so that the boxes have faces exactly where ray
+ * origins can be put. */
+static void random_scene(struct builder *b, size_t n, double size, struct vec3 offset, bool lattice, int nplanes)
+{
+	builder_init(b);
+	while (nprims(&b->sc) < n) {
+		int kind = irand(10);
+		size_t left = n - nprims(&b->sc);
+		if (lattice) {
+			struct vec3 p = v3(irand(17) - 8, irand(17) - 8, irand(17) - 8);
+			p = vadd(vscale(p, size / 8), offset);
+			if (kind < 3) {
+				add_sphere(b, p, size / 16 * (1 + irand(4)));
+			} else if (kind < 8 || left < 8) {
+				struct vec3 q = vadd(p, vscale(v3(irand(9) - 4, irand(9) - 4, irand(9) - 4), size / 8));
+				struct vec3 r = vadd(p, vscale(v3(irand(9) - 4, irand(9) - 4, irand(9) - 4), size / 8));
+				struct vec3 e = vcross(vsub(q, p), vsub(r, p));
+				if (!vzero(e))
+					add_triangle(b, p, q, r);
+			} else if (kind == 8 && left >= 8) {
+				add_fan(b, p, size / 8 * 2, 8);
+			} else {
+				add_grid(b, p, size / 8, 2, true);
+			}
+			continue;
+		}
+		struct vec3 p = vadd(rand_in_box(v3s(-size), v3s(size)), offset);
+		if (kind < 3) {
+			/* radii from 1e-6 of the scene to a tenth of it */
+			add_sphere(b, p, size * lrand(1e-6, 0.1));
+		} else if (kind < 6 || left < 16) {
+			double s = size * lrand(1e-4, 0.2);
+			add_triangle(b, p, vadd(p, vscale(rand_unit(), s)), vadd(p, vscale(rand_unit(), s)));
+		} else if (kind == 6) {
+			/* long and thin: two vertices close together, the third far away */
+			double s = size * lrand(1e-2, 1), w = s * lrand(1e-7, 1e-2);
+			struct vec3 q = vadd(p, vscale(rand_unit(), w));
+			add_triangle(b, p, q, vadd(p, vscale(rand_unit(), s)));
+		} else if (kind == 7) {
+			add_fan(b, p, size * lrand(1e-3, 0.1), 3 + irand(12));
+		} else {
+			int g = 1 + irand(left >= 128 ? 8 : 2);
+			add_grid(b, p, size * lrand(1e-3, 0.05) / g, g, false);
+		}
+	}
+	for (int i = 0; i < nplanes; i++) {
+		struct vec3 nrm = rand_unit();
+		add_plane(b, nrm, vdot(offset, nrm) + urange(-size, size));
+	}
+}
+
+static void scene_bounds(const struct scene *sc, struct vec3 *lo, struct vec3 *hi)
+{
+	*lo = v3s(INFINITY);
+	*hi = v3s(-INFINITY);
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		*lo = vmin(*lo, vsub(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+		*hi = vmax(*hi, vadd(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+	}
+	for (size_t i = 0; i < sc->nvertices; i++) {
+		*lo = vmin(*lo, sc->vertices[i]);
+		*hi = vmax(*hi, sc->vertices[i]);
+	}
+}
+
+/* ---- the reference: every primitive, no boxes ---- */
+
+static bool ref_intersect(const struct scene *sc, const struct ray *r, struct hit *h)
+{
+	bool hit = false;
+	for (size_t i = 0; i < sc->nplanes; i++)
+		if (ray_plane(&sc->planes[i], r, h)) {
+			h->prim = prim_id(PRIM_PLANE, (uint32_t)i);
+			hit = true;
+		}
+	for (size_t i = 0; i < sc->nspheres; i++)
+		if (ray_sphere(&sc->spheres[i], r, h)) {
+			h->prim = prim_id(PRIM_SPHERE, (uint32_t)i);
+			hit = true;
+		}
+	for (size_t i = 0; i < sc->ntriangles; i++)
+		if (ray_triangle(sc, &sc->triangles[i], r, h)) {
+			h->prim = prim_id(PRIM_TRIANGLE, (uint32_t)i);
+			hit = true;
+		}
+	return hit;
+}
+
+static struct vec3 kt_of(const struct scene *sc, uint32_t surface)
+{
+	return sc->materials[sc->surfaces[surface].material].transmit;
+}
+
+static struct vec3 ref_transmittance(const struct scene *sc, const struct ray *r, double tmax)
+{
+	struct vec3 pass = v3s(1);
+	for (size_t i = 0; i < sc->nplanes; i++) {
+		struct hit h = { .t = tmax };
+		if (ray_plane(&sc->planes[i], r, &h))
+			pass = vmul(pass, kt_of(sc, sc->planes[i].surface));
+	}
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		double t[2];
+		int n = ray_sphere_crossings(&sc->spheres[i], r, tmax, t);
+		for (int c = 0; c < n; c++)
+			pass = vmul(pass, kt_of(sc, sc->spheres[i].surface));
+	}
+	for (size_t i = 0; i < sc->ntriangles; i++) {
+		struct hit h = { .t = tmax };
+		if (ray_triangle(sc, &sc->triangles[i], r, &h))
+			pass = vmul(pass, kt_of(sc, sc->triangles[i].surface));
+	}
+	return pass;
+}
+
+/* The t at which prim alone is hit (INFINITY: missed). */
+static double alone_t(const struct scene *sc, uint32_t prim, const struct ray *r)
+{
+	struct hit h = { .t = INFINITY };
+	uint32_t i = prim_index(prim);
+	switch (prim_kind(prim)) {
+	case PRIM_SPHERE: ray_sphere(&sc->spheres[i], r, &h); break;
+	case PRIM_TRIANGLE: ray_triangle(sc, &sc->triangles[i], r, &h); break;
+	case PRIM_PLANE: ray_plane(&sc->planes[i], r, &h); break;
+	}
+	return h.t;
+}
+
+/* ---- comparison ---- */
+
+struct tally {
+	long rays, hits, ties, near, shadow, fail;
+	int printed;
+};
+
+static void print_ray(const char *what, const struct ray *r, double tmax)
+{
+	fprintf(stderr, "  %s ray o = <%a, %a, %a> d = <%a, %a, %a> tmax %a\n", what, r->o.x, r->o.y, r->o.z, r->d.x,
+	        r->d.y, r->d.z, tmax);
+}
+
+static double ulps_apart(double a, double b)
+{
+	double u = nextafter(fmax(fabs(a), fabs(b)), INFINITY) - fmax(fabs(a), fabs(b));
+	return fabs(a - b) / u;
+}
+
+/* Do answer (fa, ha) and (fb, hb) agree, as the header explains? */
+static bool agree(const struct scene *sc, const struct ray *r, double tmax, bool fa, const struct hit *ha, bool fb,
+                  const struct hit *hb, struct tally *ty)
+{
+	if (fa != fb)
+		return false;
+	if (!fa)
+		return ha->t == tmax && hb->t == tmax;
+	if (ha->t == hb->t) {
+		if (ha->prim != hb->prim) {
+			if (alone_t(sc, ha->prim, r) != ha->t || alone_t(sc, hb->prim, r) != hb->t)
+				return false;
+			ty->ties++;
+		}
+		return true;
+	}
+	/* a near tie between two primitives, each really hit where it says */
+	if (ha->prim == hb->prim || alone_t(sc, ha->prim, r) != ha->t || alone_t(sc, hb->prim, r) != hb->t ||
+	    ulps_apart(ha->t, hb->t) > NEAR_ULPS)
+		return false;
+	if (ty->near++ < 3 && getenv("TEST_BVH_VERBOSE")) {
+		fprintf(stderr, "near tie: prim %#x t %a vs prim %#x t %a (%g ulps)\n", ha->prim, ha->t, hb->prim, hb->t,
+		        ulps_apart(ha->t, hb->t));
+		print_ray("near tie", r, tmax);
+	}
+	return true;
+}
+
+static const char *const names[] = { "ref", "none", "bvh" };
+
+static void compare_ray(const struct scene *sc, const struct bvh *none, const struct bvh *bvh, const struct ray *r,
+                        double tmax, const char *what, struct tally *ty)
+{
+	struct hit h[3] = { { .t = tmax, .prim = UINT32_MAX }, { .t = tmax, .prim = UINT32_MAX },
+	                    { .t = tmax, .prim = UINT32_MAX } };
+	bool f[3];
+	f[0] = ref_intersect(sc, r, &h[0]);
+	f[1] = bvh_intersect(none, sc, r, &h[1]);
+	f[2] = bvh_intersect(bvh, sc, r, &h[2]);
+	ty->rays++;
+	ty->hits += f[0];
+	for (int k = 1; k < 3; k++)
+		if (!agree(sc, r, tmax, f[0], &h[0], f[k], &h[k], ty)) {
+			ty->fail++;
+			if (ty->printed++ < 10) {
+				fprintf(stderr, "%s: %s and %s differ: %s prim %#x t %a, %s prim %#x t %a\n", what, names[0],
+				        names[k], f[0] ? "hit" : "miss", h[0].prim, h[0].t, f[k] ? "hit" : "miss", h[k].prim,
+				        h[k].t);
+				print_ray(what, r, tmax);
+			}
+		}
+
+	/* the shadow filter, over the segment and over the whole ray */
+	double ends[2] = { tmax, INFINITY };
+	for (int e = 0; e < 2; e++) {
+		struct vec3 t[3] = { ref_transmittance(sc, r, ends[e]), bvh_transmittance(none, sc, r, ends[e]),
+		                     bvh_transmittance(bvh, sc, r, ends[e]) };
+		ty->shadow++;
+		for (int k = 1; k < 3; k++) {
+			bool ok = t[k].x == t[0].x && t[k].y == t[0].y && fabs(t[k].z - t[0].z) <= 1e-13 * t[0].z;
+			if (!ok) {
+				ty->fail++;
+				if (ty->printed++ < 10) {
+					fprintf(stderr, "%s: transmittance %s <%a, %a, %a> but %s <%a, %a, %a>\n", what, names[0],
+					        t[0].x, t[0].y, t[0].z, names[k], t[k].x, t[k].y, t[k].z);
+					print_ray(what, r, ends[e]);
+				}
+			}
+		}
+	}
+}
+
+/* A direction with some components zeroed, each to +0 or -0 at random. */
+static struct vec3 signed_zero_dir(void)
+{
+	for (;;) {
+		struct vec3 d = rand_unit();
+		double *c[3] = { &d.x, &d.y, &d.z };
+		int zeros = 1 + irand(2);
+		for (int k = 0; k < zeros; k++)
+			*c[irand(3)] = irand(2) ? 0.0 : -0.0;
+		if (!vzero(d))
+			return vnorm(d);
+	}
+}
+
+static struct vec3 axis_dir(void)
+{
+	double v[3] = { irand(2) ? 0.0 : -0.0, irand(2) ? 0.0 : -0.0, irand(2) ? 0.0 : -0.0 };
+	v[irand(3)] = irand(2) ? 1 : -1;
+	return v3a(v);
+}
+
+/* A point of a random primitive (for rays that hit something). */
+static struct vec3 point_on_prim(const struct scene *sc)
+{
+	size_t n = nprims(sc);
+	size_t k = (size_t)(next_u64() % n);
+	if (k < sc->nspheres) {
+		const struct sphere *s = &sc->spheres[k];
+		return irand(2) ? s->center : vadd(s->center, vscale(rand_unit(), s->radius * urand()));
+	}
+	const struct triangle *t = &sc->triangles[k - sc->nspheres];
+	struct vec3 a = sc->vertices[t->v[0]], b = sc->vertices[t->v[1]], c = sc->vertices[t->v[2]];
+	switch (irand(4)) {
+	case 0: return a; /* a vertex */
+	case 1: return vadd(a, vscale(vsub(b, a), urand())); /* an edge */
+	default: {
+		double u = urand(), v = urand();
+		if (u + v > 1)
+			u = 1 - u, v = 1 - v;
+		return vadd(a, vadd(vscale(vsub(b, a), u), vscale(vsub(c, a), v)));
+	}
+	}
+}
+
+/* A coordinate on the lattice of a lattice scene (spacing size / 8): where its boxes have faces. */
+static double lattice_coord(double size, double offset)
+{
+	return offset + (irand(25) - 12) * size / 8;
+}
+
+/* Compares nrays random rays; at least min_hits of them (a fraction) must hit something,
+ * or the comparison proves little. */
+static void compare_scene(const struct scene *sc, long nrays, double min_hits, bool lattice, double size,
+                          struct vec3 offset, const char *what)
+{
+	struct bvh *none = bvh_build(sc, ACCEL_NONE);
+	struct bvh *bvh = bvh_build(sc, ACCEL_BVH);
+	size_t nodes;
+	int depth;
+	bvh_shape(bvh, &nodes, &depth);
+	size_t n = nprims(sc);
+	CHECK(depth <= 96);
+	CHECK(n == 0 || nodes <= 2 * n - 1);
+	bvh_shape(none, &nodes, &depth);
+	CHECK(depth == 0 && nodes == (n > 0));
+
+	struct vec3 lo, hi;
+	scene_bounds(sc, &lo, &hi);
+	if (n == 0)
+		lo = hi = offset;
+	struct vec3 mid = vscale(vadd(lo, hi), 0.5);
+	double extent = fmax(vmaxc(vsub(hi, lo)), size);
+	struct tally ty = { 0 };
+	for (long i = 0; i < nrays; i++) {
+		struct ray r;
+		/* origin */
+		switch (irand(lattice ? 6 : 5)) {
+		case 0: case 1: r.o = rand_in_box(lo, hi); break;                       /* inside */
+		case 2: r.o = vadd(mid, vscale(rand_unit(), extent * urange(1, 4))); break; /* outside */
+		case 3:                                                                   /* on a vertex */
+			r.o = sc->nvertices ? sc->vertices[next_u64() % sc->nvertices] : rand_in_box(lo, hi);
+			break;
+		case 4: r.o = n ? point_on_prim(sc) : mid; break;                         /* on a surface */
+		default:                                                                  /* on box faces */
+			r.o = v3(lattice_coord(size, offset.x), lattice_coord(size, offset.y), lattice_coord(size, offset.z));
+			break;
+		}
+		/* direction */
+		switch (irand(5)) {
+		case 0: r.d = rand_unit(); break;
+		case 1: r.d = signed_zero_dir(); break;
+		case 2: r.d = axis_dir(); break;
+		default: {
+			struct vec3 to = n ? point_on_prim(sc) : rand_unit();
+			struct vec3 d = vsub(to, r.o);
+			if (lattice && irand(2)) { /* keep it in a face plane: zero a component */
+				int k = irand(3);
+				if (k == 0) d.x = irand(2) ? 0.0 : -0.0;
+				else if (k == 1) d.y = irand(2) ? 0.0 : -0.0;
+				else d.z = irand(2) ? 0.0 : -0.0;
+			}
+			r.d = vzero(d) ? rand_unit() : vnorm(d);
+			break;
+		}
+		}
+		double tmax = irand(3) ? INFINITY : extent * lrand(1e-3, 2);
+		compare_ray(sc, none, bvh, &r, tmax, what, &ty);
+	}
+	if (getenv("TEST_BVH_VERBOSE"))
+		fprintf(stderr, "%s: %ld rays, %ld hits; %ld exact ties named different primitives, %ld near ties "
+		        "(within %d ulps) differed\n", what, ty.rays, ty.hits, ty.ties, ty.near, NEAR_ULPS);
+	if (ty.fail)
+		fprintf(stderr, "%s: %ld of %ld comparisons failed\n", what, ty.fail, ty.rays * 6);
+	CHECK(ty.fail == 0);
+	if (!(ty.hits >= min_hits * (double)ty.rays))
+		fprintf(stderr, "%s: only %ld of %ld rays hit\n", what, ty.hits, ty.rays);
+	CHECK(ty.hits >= min_hits * (double)ty.rays);
+	bvh_free(none);
+	bvh_free(bvh);
+}
+
+/* ---- the tests ---- */
+
+static void test_random_scenes(void)
+{
+	static const size_t sizes[] = { 1, 2, 100, 10000 };
+	for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
+		for (int lattice = 0; lattice < 2; lattice++) {
+			struct builder b;
+			char what[64];
+			size_t n = sizes[s];
+			random_scene(&b, n, 10, v3s(0), lattice, n == 1 ? 0 : n == 2 ? 1 : 2);
+			snprintf(what, sizeof what, "%s scene of %zu", lattice ? "lattice" : "random", n);
+			compare_scene(&b.sc, n >= 10000 ? 1500 : 10000, n == 1 ? 0.05 : 0.3, lattice, 10, v3s(0), what);
+			scene_free(&b.sc);
+		}
+	/* only planes: no BVH nodes at all */
+	struct builder b;
+	builder_init(&b);
+	add_plane(&b, v3(0, 1, 0), 0);
+	add_plane(&b, v3(1, 1, 0), 2);
+	compare_scene(&b.sc, 2000, 0.2, false, 10, v3s(0), "planes only");
+	scene_free(&b.sc);
+}
+
+/* A direction with a -0 component and an origin on the face of the root box: the slab
+ * test must treat the ray as inside that slab, as it does for +0. */
+static void test_signed_zero_on_face(void)
+{
+	struct builder b;
+	builder_init(&b);
+	/* edge A-B lies in the planes x = 0 and y = 0, the root box's lo faces */
+	add_triangle(&b, v3(0, 0, 0), v3(0, 0, 2), v3(1, 1, 1));
+	b.sc.triangles[0].surface = 0;
+	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH), *none = bvh_build(&b.sc, ACCEL_NONE);
+	static const double zeros[2] = { 0.0, -0.0 };
+	for (int sx = 0; sx < 2; sx++)
+		for (int sz = 0; sz < 2; sz++) {
+			/* in the plane x = 0, crossing the edge at (0, 0, 1) */
+			struct ray r = { v3(0, -1, 1), v3(zeros[sx], 1, zeros[sz]) };
+			struct hit h0 = { .t = INFINITY }, h1 = { .t = INFINITY }, h2 = { .t = INFINITY };
+			bool f0 = ref_intersect(&b.sc, &r, &h0);
+			bool f1 = bvh_intersect(none, &b.sc, &r, &h1);
+			bool f2 = bvh_intersect(bvh, &b.sc, &r, &h2);
+			if (!(f0 && f1 && f2 && h0.t == 1 && h1.t == 1 && h2.t == 1))
+				fprintf(stderr, "d = <%g, 1, %g>: ref %d t %g, none %d t %g, bvh %d t %g\n", zeros[sx], zeros[sz],
+				        f0, h0.t, f1, h1.t, f2, h2.t);
+			CHECK(f0 && h0.t == 1);
+			CHECK(f1 && h1.t == 1);
+			CHECK(f2 && h2.t == 1);
+			struct vec3 tr = bvh_transmittance(bvh, &b.sc, &r, INFINITY);
+			CHECK(vzero(tr));
+			/* the same from the other side: origin on the hi face y = 1, going -y */
+			r = (struct ray){ v3(0, 1, 1), v3(zeros[sx], -1, zeros[sz]) };
+			h0 = h1 = h2 = (struct hit){ .t = INFINITY };
+			f0 = ref_intersect(&b.sc, &r, &h0);
+			f1 = bvh_intersect(none, &b.sc, &r, &h1);
+			f2 = bvh_intersect(bvh, &b.sc, &r, &h2);
+			CHECK(f0 && f1 && f2 && h0.t == 1 && h1.t == 1 && h2.t == 1);
+		}
+	bvh_free(bvh);
+	bvh_free(none);
+	scene_free(&b.sc);
+}
+
+/* All centroids equal: must end in a leaf, not recurse forever. */
+static void test_same_centroid(void)
+{
+	struct builder b;
+	builder_init(&b);
+	struct vec3 c = v3(1, 2, 3);
+	for (int i = 0; i < 500; i++)
+		add_sphere(&b, c, (1 + irand(256)) / 64.0);
+	for (int i = 0; i < 500; i++) {
+		/* box [c - |a|, c + |a|]: its centre is c exactly (dyadic values) */
+		struct vec3 a = v3((16 + irand(112)) / 64.0, (16 + irand(112)) / 64.0, (16 + irand(112)) / 64.0);
+		struct vec3 s = v3(irand(2) ? 1 : -1, irand(2) ? 1 : -1, irand(2) ? 1 : -1);
+		a = vmul(a, s);
+		struct vec3 q = v3(a.x * (irand(129) - 64) / 64.0, a.y * (irand(129) - 64) / 64.0, a.z * (irand(129) - 64) / 64.0);
+		add_triangle(&b, vadd(c, a), vsub(c, a), vadd(c, q));
+	}
+	/* and 300 identical spheres */
+	for (int i = 0; i < 300; i++)
+		add_sphere(&b, c, 0.5);
+	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+	size_t nodes;
+	int depth;
+	bvh_shape(bvh, &nodes, &depth);
+	if (depth != 0)
+		fprintf(stderr, "same centroid: %zu nodes, depth %d\n", nodes, depth);
+	CHECK(depth <= 1);
+	bvh_free(bvh);
+	compare_scene(&b.sc, 3000, 0.5, false, 2, c, "same centroid");
+	scene_free(&b.sc);
+
+	/* identical triangles */
+	builder_init(&b);
+	for (int i = 0; i < 200; i++)
+		add_triangle(&b, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0));
+	bvh = bvh_build(&b.sc, ACCEL_BVH);
+	bvh_shape(bvh, &nodes, &depth);
+	CHECK(depth == 0 && nodes == 1);
+	bvh_free(bvh);
+	compare_scene(&b.sc, 2000, 0.02, false, 1, v3s(0), "identical triangles");
+	scene_free(&b.sc);
+}
+
+/* One huge triangle over many tiny ones. */
+static void test_huge_and_tiny(void)
+{
+	struct builder b;
+	builder_init(&b);
+	add_triangle(&b, v3(-1e6, -1, -1e6), v3(1e6, 1, -1e6), v3(0, 0, 1e6));
+	for (int i = 0; i < 3000; i++) {
+		struct vec3 p = rand_in_box(v3s(-1), v3s(1));
+		double s = lrand(1e-6, 1e-2);
+		add_triangle(&b, p, vadd(p, vscale(rand_unit(), s)), vadd(p, vscale(rand_unit(), s)));
+	}
+	for (int i = 0; i < 500; i++)
+		add_sphere(&b, rand_in_box(v3s(-1), v3s(1)), lrand(1e-6, 1e-3));
+	compare_scene(&b.sc, 2000, 0.3, false, 1, v3s(0), "huge and tiny");
+	scene_free(&b.sc);
+}
+
+/* Far from the origin: at 1e9 a float has an ulp of 64, so float boxes must be
+ * rounded outward; every primitive must still be found. */
+static void test_far_offset(void)
+{
+	static const double offsets[] = { 1e9, -1e9, 3e12 };
+	for (size_t k = 0; k < sizeof offsets / sizeof offsets[0]; k++) {
+		struct builder b;
+		struct vec3 off = v3(offsets[k], -0.5 * offsets[k], 0.25 * offsets[k]);
+		random_scene(&b, 1000, 1, off, false, 1);
+		char what[64];
+		snprintf(what, sizeof what, "offset %g", offsets[k]);
+		compare_scene(&b.sc, 3000, 0.3, false, 1, off, what);
+
+		/* aim at every sphere's centre from outside: each ray must hit something */
+		struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+		long missed = 0;
+		for (size_t i = 0; i < b.sc.nspheres; i++) {
+			struct vec3 c = b.sc.spheres[i].center;
+			struct ray r;
+			r.o = vadd(c, vscale(rand_unit(), 3));
+			r.d = vnorm(vsub(c, r.o));
+			struct hit h = { .t = INFINITY };
+			missed += !bvh_intersect(bvh, &b.sc, &r, &h);
+		}
+		if (missed)
+			fprintf(stderr, "%s: %ld of %zu rays aimed at sphere centres missed\n", what, missed, b.sc.nspheres);
+		CHECK(missed == 0);
+		bvh_free(bvh);
+		scene_free(&b.sc);
+	}
+}
+
+/* Centroids in geometric progression: SAH splits off a few at a time, so the tree is
+ * as deep as it can get. Depth must stay within the traversal stack. */
+static void test_deep(void)
+{
+	struct builder b;
+	builder_init(&b);
+	double x = 1;
+	for (int i = 0; i < 1500; i++, x *= 1.4)
+		add_sphere(&b, v3(x, 0, 0), x * 0.1);
+	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+	size_t nodes;
+	int depth;
+	bvh_shape(bvh, &nodes, &depth);
+	CHECK(depth <= 96);
+	CHECK(nodes <= 2 * nprims(&b.sc) - 1);
+	/* rays along the row visit the deepest leaves */
+	for (int i = 0; i < 200; i++) {
+		struct ray r = { v3(-1, urange(-0.01, 0.01), urange(-0.01, 0.01)), v3(1, 0, 0) };
+		struct hit h = { .t = INFINITY }, h0 = { .t = INFINITY };
+		bool f = bvh_intersect(bvh, &b.sc, &r, &h), f0 = ref_intersect(&b.sc, &r, &h0);
+		CHECK(f == f0 && h.t == h0.t);
+		struct vec3 tr = bvh_transmittance(bvh, &b.sc, &r, INFINITY), tr0 = ref_transmittance(&b.sc, &r, INFINITY);
+		CHECK(tr.x == tr0.x && tr.y == tr0.y);
+		r.o = v3(x * 2, 0, 0);
+		r.d = v3(-1, 0, 0);
+		h = h0 = (struct hit){ .t = INFINITY };
+		f = bvh_intersect(bvh, &b.sc, &r, &h);
+		f0 = ref_intersect(&b.sc, &r, &h0);
+		CHECK(f == f0 && h.t == h0.t);
+	}
+	bvh_free(bvh);
+	compare_scene(&b.sc, 2000, 0.05, false, 1, v3s(0), "geometric progression");
+	scene_free(&b.sc);
+
+	/* a random scene's tree is shallow */
+	random_scene(&b, 20000, 10, v3s(0), false, 0);
+	bvh = bvh_build(&b.sc, ACCEL_BVH);
+	bvh_shape(bvh, &nodes, &depth);
+	if (depth > 48)
+		fprintf(stderr, "20000 random primitives: depth %d\n", depth);
+	CHECK(depth <= 48);
+	CHECK(nodes <= 2 * nprims(&b.sc) - 1);
+	bvh_free(bvh);
+	scene_free(&b.sc);
+}
+
+int main(void)
+{
+	test_signed_zero_on_face();
+	test_random_scenes();
+	test_same_centroid();
+	test_huge_and_tiny();
+	test_far_offset();
+	test_deep();
+	return check_result();
+}

@@ -1,0 +1,365 @@
+/* test_mesh_import.c: mesh_import on the small files of tests/unit/meshes/: what it reads,
+ * what it leaves out, the messages it gives for broken files, and that assimp stays quiet. */
+#include <errno.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+#include "render/mesh_import.h"
+#include "tests/unit/check.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define HAVE_LSAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define HAVE_LSAN 1
+#endif
+#endif
+#ifdef HAVE_LSAN
+#include <sanitizer/lsan_interface.h>
+#endif
+
+/* The fixture's path: under $SCN_SRCDIR, which the harness sets, or under the current
+ * directory when the test is run by hand from the source tree. */
+static const char *fixture(const char *name)
+{
+	static char path[4096];
+	const char *dir = getenv("SCN_SRCDIR");
+	snprintf(path, sizeof path, "%s/tests/unit/meshes/%s", dir && *dir ? dir : ".", name);
+	return path;
+}
+
+/* Imports a fixture that must load; on failure prints why and leaves *m empty. */
+static bool load(const char *name, struct mesh_data *m)
+{
+	char err[512];
+	if (mesh_import(fixture(name), m, err, sizeof err) == 0)
+		return true;
+	fprintf(stderr, "%s: unexpected error: %s\n", name, err);
+	check_failures++;
+	return false;
+}
+
+static void corner(const struct mesh_data *m, size_t f, int k, double p[3])
+{
+	memcpy(p, m->vertices[m->faces[f][k]], sizeof(double[3]));
+}
+
+/* The face's (B-A) x (C-A): its geometric normal, twice its area long. */
+static void face_cross(const struct mesh_data *m, size_t f, double n[3])
+{
+	double a[3], b[3], c[3];
+	corner(m, f, 0, a), corner(m, f, 1, b), corner(m, f, 2, c);
+	double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+	double g[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+	n[0] = e[1] * g[2] - e[2] * g[1];
+	n[1] = e[2] * g[0] - e[0] * g[2];
+	n[2] = e[0] * g[1] - e[1] * g[0];
+}
+
+static double total_area(const struct mesh_data *m)
+{
+	double sum = 0;
+	for (size_t f = 0; f < m->nfaces; f++) {
+		double n[3];
+		face_cross(m, f, n);
+		sum += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	}
+	return sum;
+}
+
+static bool indices_in_range(const struct mesh_data *m)
+{
+	for (size_t f = 0; f < m->nfaces; f++)
+		for (int k = 0; k < 3; k++)
+			if (m->faces[f][k] >= m->nvertices)
+				return false;
+	return true;
+}
+
+/* Whether some vertex of m is within tol of p. */
+static bool has_vertex(const struct mesh_data *m, double x, double y, double z, double tol)
+{
+	for (size_t i = 0; i < m->nvertices; i++)
+		if (fabs(m->vertices[i][0] - x) <= tol && fabs(m->vertices[i][1] - y) <= tol &&
+		    fabs(m->vertices[i][2] - z) <= tol)
+			return true;
+	return false;
+}
+
+/* Checks that every face of m faces along +z, with the winding of the file. */
+static void check_faces_up(const struct mesh_data *m)
+{
+	for (size_t f = 0; f < m->nfaces; f++) {
+		double n[3];
+		face_cross(m, f, n);
+		CHECK(n[2] > 0 && n[0] == 0 && n[1] == 0);
+	}
+}
+
+static void test_obj(void)
+{
+	struct mesh_data m;
+	if (!load("square.obj", &m))
+		return;
+	CHECK(m.nvertices == 4);
+	CHECK(m.nfaces == 2);
+	CHECK(m.nnormals == 0 && m.normals == NULL);
+	CHECK(indices_in_range(&m));
+	CHECK(has_vertex(&m, 0, 0, 0, 0) && has_vertex(&m, 1, 0, 0, 0) && has_vertex(&m, 1, 1, 0, 0) &&
+	      has_vertex(&m, 0, 1, 0, 0));
+	CHECK_NEAR(total_area(&m), 1, 1e-15);
+	check_faces_up(&m);
+	mesh_data_free(&m);
+	CHECK(m.vertices == NULL && m.faces == NULL && m.nvertices == 0 && m.nfaces == 0);
+	mesh_data_free(&m); /* freeing an empty one is harmless */
+}
+
+static void test_quad(void)
+{
+	struct mesh_data m;
+	if (!load("quad.obj", &m))
+		return;
+	CHECK(m.nvertices == 4);
+	CHECK(m.nfaces == 2);
+	CHECK(indices_in_range(&m));
+	CHECK_NEAR(total_area(&m), 2, 1e-15);
+	check_faces_up(&m);
+	mesh_data_free(&m);
+}
+
+static void test_normals(void)
+{
+	struct mesh_data m;
+	if (!load("normals.obj", &m))
+		return;
+	/* the two ridge corners are split by their normals: 3 + 3 vertices */
+	CHECK(m.nfaces == 2);
+	CHECK(m.nvertices == 6);
+	CHECK(m.nnormals == m.nvertices && m.normals != NULL);
+	if (m.nnormals != m.nvertices) {
+		mesh_data_free(&m);
+		return;
+	}
+	for (size_t f = 0; f < m.nfaces; f++) {
+		double g[3];
+		face_cross(&m, f, g);
+		double side = g[0] < 0 ? -1 : 1; /* the left or the right slope of the roof */
+		for (int k = 0; k < 3; k++) {
+			const double *n = m.normals[m.faces[f][k]];
+			CHECK_NEAR(n[0], side * sqrt(0.5), 1e-15);
+			CHECK_NEAR(n[1], sqrt(0.5), 1e-15);
+			CHECK(n[2] == 0);
+		}
+	}
+	mesh_data_free(&m);
+}
+
+static void test_partial_normals(void)
+{
+	struct mesh_data m;
+	if (!load("partial_normals.obj", &m))
+		return;
+	CHECK(m.nnormals == 0 && m.normals == NULL);
+	CHECK(m.nfaces == 2);
+	CHECK(m.nvertices == 4); /* joined again once the normals are gone */
+	CHECK(indices_in_range(&m));
+	mesh_data_free(&m);
+}
+
+static void test_ascii_ply(void)
+{
+	struct mesh_data m;
+	if (!load("ascii.ply", &m))
+		return;
+	CHECK(m.nvertices == 5);
+	CHECK(m.nfaces == 3); /* the quad split in two, and the triangle */
+	CHECK(indices_in_range(&m));
+	CHECK(has_vertex(&m, 0.5, 0.5, 1, 0));
+	CHECK_NEAR(total_area(&m), 1 + 0.5 * sqrt(1.25), 1e-15);
+	CHECK(m.nnormals == 5);
+	for (size_t i = 0; i < m.nnormals; i++)
+		CHECK(m.normals[i][0] == 0 && m.normals[i][1] == 0 && m.normals[i][2] == 1);
+	mesh_data_free(&m);
+}
+
+static void test_binary_ply(void)
+{
+	struct mesh_data m;
+	if (!load("binary.ply", &m))
+		return;
+	CHECK(m.nvertices == 4);
+	CHECK(m.nfaces == 2);
+	CHECK(m.nnormals == 0);
+	CHECK(indices_in_range(&m));
+	CHECK(has_vertex(&m, 0.25, 0.5, -1.5, 0));
+	CHECK(has_vertex(&m, 1, 1, 0, 0));
+	mesh_data_free(&m);
+}
+
+/* One triangle placed by two nodes: the transforms are applied, normals included. */
+static void test_nodes(void)
+{
+	struct mesh_data m;
+	if (!load("nodes.gltf", &m))
+		return;
+	CHECK(m.nfaces == 2);
+	CHECK(m.nvertices == 6);
+	CHECK(indices_in_range(&m));
+	/* float transforms: exact to about 1e-7 of the size */
+	const double tol = 1e-6;
+	CHECK(has_vertex(&m, 10, 0, 0, tol) && has_vertex(&m, 11, 0, 0, tol) && has_vertex(&m, 10, 1, 0, tol));
+	CHECK(has_vertex(&m, 0, 0, 10, tol) && has_vertex(&m, 0, 0, 8, tol) && has_vertex(&m, 0, 2, 10, tol));
+	CHECK(m.nnormals == 6);
+	for (size_t f = 0; m.nnormals == 6 && f < m.nfaces; f++) {
+		bool moved = m.vertices[m.faces[f][0]][0] > 5; /* the first node's copy */
+		for (int k = 0; k < 3; k++) {
+			const double *n = m.normals[m.faces[f][k]];
+			CHECK_NEAR(n[0], moved ? 0 : 1, tol);
+			CHECK_NEAR(n[2], moved ? 1 : 0, tol);
+		}
+	}
+	mesh_data_free(&m);
+}
+
+static void test_points_and_lines_left_out(void)
+{
+	struct mesh_data m;
+	if (!load("mixed.obj", &m))
+		return;
+	CHECK(m.nfaces == 1);
+	CHECK(indices_in_range(&m));
+	for (size_t f = 0; f < m.nfaces; f++)
+		for (int k = 0; k < 3; k++)
+			CHECK(m.vertices[m.faces[f][k]][0] != 5);
+	mesh_data_free(&m);
+}
+
+/* mesh_import, for a file on which assimp's reader throws and leaks what it had built:
+ * assimp 5.2's PLY reader its aiMesh (~PLYImporter does not free mGeneratedMesh; later
+ * assimp does). The leak is inside libassimp, so LeakSanitizer ignores what is allocated
+ * during this one call, and still checks every other import for a scene we forgot to
+ * release. */
+static int import_leaky(const char *path, struct mesh_data *m, char *err, size_t errlen)
+{
+#ifdef HAVE_LSAN
+	__lsan_disable();
+#endif
+	int rc = mesh_import(path, m, err, errlen);
+#ifdef HAVE_LSAN
+	__lsan_enable();
+#endif
+	return rc;
+}
+
+/* Imports a file that must fail (through import_leaky if assimp leaks on it), and checks
+ * that the message names it and contains want and also (unless NULL), that it ends
+ * without a full stop or newline, and that *out is left empty. */
+static void expect_error(const char *path, bool leaks, const char *want, const char *also)
+{
+	struct mesh_data m;
+	char err[512] = "";
+	int rc = leaks ? import_leaky(path, &m, err, sizeof err) : mesh_import(path, &m, err, sizeof err);
+	size_t len = strlen(err);
+	if (rc == 0 || !strstr(err, path) || !strstr(err, want) || (also && !strstr(err, also)) || len == 0 ||
+	    err[len - 1] == '.' || err[len - 1] == '\n') {
+		fprintf(stderr, "%s: rc %d, message: %s\n  expected one with '%s'%s%s%s\n", path, rc, err, want,
+		        also ? " and '" : "", also ? also : "", also ? "'" : "");
+		check_failures++;
+	}
+	CHECK(m.vertices == NULL && m.normals == NULL && m.faces == NULL);
+	CHECK(m.nvertices == 0 && m.nnormals == 0 && m.nfaces == 0);
+	mesh_data_free(&m);
+}
+
+static void test_errors(void)
+{
+	expect_error(fixture("no_such_file.obj"), false, "cannot read mesh file '", strerror(ENOENT));
+	/* the fixture directory itself: it opens, but cannot be read */
+	char dir[4096];
+	snprintf(dir, sizeof dir, "%s", fixture(""));
+	dir[strlen(dir) - 1] = '\0';
+	expect_error(dir, false, "cannot read mesh file '", strerror(EISDIR));
+	expect_error(fixture("empty.obj"), false, "malformed mesh file '", NULL);
+	expect_error(fixture("garbage.bin"), false, "malformed mesh file '", NULL);
+	expect_error(fixture("bad_index.obj"), false, "malformed mesh file '", "out of range");
+	expect_error(fixture("bad_number.ply"), true, "malformed mesh file '", "oops");
+	expect_error(fixture("truncated.ply"), false, "malformed mesh file '", NULL);
+	expect_error(fixture("lines.obj"), false, "no triangles in '", NULL);
+	/* assimp's PLY reader would loop forever on this one */
+	expect_error(fixture("no_end_header.ply"), false, "malformed mesh file '", "end_header");
+	/* and its Triangulate would abort the process on this one */
+	expect_error(fixture("cut_faces.ply"), false, "malformed mesh file '", "face 1 has no vertices");
+
+	/* a short buffer gets a cut, terminated message */
+	struct mesh_data m;
+	char err[8];
+	memset(err, 'x', sizeof err);
+	CHECK(mesh_import(fixture("lines.obj"), &m, err, sizeof err) != 0);
+	CHECK(memchr(err, '\0', sizeof err) != NULL);
+}
+
+/* assimp logs only through a logger we never attach, and must print nothing, whatever the
+ * file: stdout and stderr are pointed at a temporary file while every fixture loads. */
+static void test_quiet(void)
+{
+	static const char *const names[] = {
+		"square.obj", "quad.obj", "normals.obj", "partial_normals.obj", "mixed.obj", "lines.obj",
+		"bad_index.obj", "empty.obj", "ascii.ply", "binary.ply", "bad_number.ply", "truncated.ply",
+		"garbage.bin", "nodes.gltf", "no_such_file.obj", "no_end_header.ply", "cut_faces.ply",
+	};
+	FILE *tmp = tmpfile();
+	if (!tmp) {
+		fprintf(stderr, "test_quiet: tmpfile: %s\n", strerror(errno));
+		check_failures++;
+		return;
+	}
+	fflush(stdout);
+	fflush(stderr);
+	int saved_out = dup(1), saved_err = dup(2);
+	dup2(fileno(tmp), 1);
+	dup2(fileno(tmp), 2);
+	for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
+		struct mesh_data m;
+		char err[512];
+		const char *path = fixture(names[i]);
+		bool leaks = strcmp(names[i], "bad_number.ply") == 0;
+		if ((leaks ? import_leaky(path, &m, err, sizeof err) : mesh_import(path, &m, err, sizeof err)) == 0)
+			mesh_data_free(&m);
+	}
+	fflush(stdout);
+	fflush(stderr);
+	dup2(saved_out, 1);
+	dup2(saved_err, 2);
+	close(saved_out);
+	close(saved_err);
+	/* the output went in through the descriptor, so ask it, not the FILE */
+	off_t size = lseek(fileno(tmp), 0, SEEK_END);
+	if (size != 0) {
+		char buf[1024];
+		ssize_t n = pread(fileno(tmp), buf, sizeof buf - 1, 0);
+		buf[n > 0 ? n : 0] = '\0';
+		fprintf(stderr, "test_quiet: the importer printed %lld bytes:\n%s\n", (long long)size, buf);
+		check_failures++;
+	}
+	fclose(tmp);
+}
+
+int main(void)
+{
+	test_obj();
+	test_quad();
+	test_normals();
+	test_partial_normals();
+	test_ascii_ply();
+	test_binary_ply();
+	test_nodes();
+	test_points_and_lines_left_out();
+	test_errors();
+	test_quiet();
+	return check_result();
+}
