@@ -1,3 +1,9 @@
 # tests/cli/local.mk: the tests of this folder (see tests/run-test).
 TESTS += tests/cli/commands.sh
 EXTRA_DIST += tests/cli/commands.sh
+TESTS += tests/cli/render.sh
+EXTRA_DIST += tests/cli/render.sh
+TESTS += tests/cli/diff.sh
+EXTRA_DIST += tests/cli/diff.sh
+TESTS += tests/cli/pov.sh
+EXTRA_DIST += tests/cli/pov.sh

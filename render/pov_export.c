@@ -1,0 +1,1150 @@
+/* pov_export.c: writes a lowered scene as the POV-Ray 3.7 scene that computes the same
+ * image (povray-equivalence.md): the header that turns POV-Ray's extras off, the camera,
+ * the sky, the lights, every material by the single-layer recipe where that is exact and
+ * by the layered general recipe otherwise, and the world-space geometry (meshes as mesh2
+ * in single precision, as POV-Ray stores them). The first lines are comments with the
+ * povray command line that renders it and whatever POV-Ray cannot reproduce exactly. */
+#include "pov_export.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <math.h>
+#include <png.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "xalloc.h"
+
+/* A colour channel this small stands in for zero where a layer must not filter to
+ * exactly 0 (povray-equivalence.md section 7): POV-Ray skips the layers below one. */
+#define TINY 1e-7
+/* How far up-wind a distant light is put, at least, and in scene radii. */
+#define FAR_MIN 1e6
+#define FAR_RADII 100
+/* Surfaces closer than this meet as far as POV-Ray's shadow rays are concerned. */
+#define CONTACT 1e-3
+
+enum write_as { WRITE_TRIANGLE = 1, WRITE_MESH2, WRITE_UNION };
+
+struct pov {
+	FILE *f;
+	const struct scene *sc;
+	const struct pov_export_options *opt;
+	char *notes;                   /* comment lines for the header, each ending in '\n' */
+	size_t notes_len;
+	unsigned char *how;            /* per first triangle of a run: enum write_as */
+	int sky_kind;                  /* SKY_LATLONG: enum sky_file */
+	double sky_gamma;              /* a PNG's file gamma, 0 for sRGB */
+};
+
+static void note(struct pov *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void note(struct pov *p, const char *fmt, ...)
+{
+	char line[512];
+	va_list ap;
+	va_start(ap, fmt);
+	int n = vsnprintf(line, sizeof line - 1, fmt, ap);
+	va_end(ap);
+	if (n < 0)
+		return;
+	if ((size_t)n > sizeof line - 2)
+		n = (int)sizeof line - 2;
+	line[n++] = '\n';
+	line[n] = '\0';
+	p->notes = xrealloc(p->notes, p->notes_len + (size_t)n + 1);
+	memcpy(p->notes + p->notes_len, line, (size_t)n + 1);
+	p->notes_len += (size_t)n;
+}
+
+/* --- numbers --- */
+
+/* The shortest decimal that reads back as v exactly. */
+static void num(FILE *f, double v)
+{
+	char buf[40];
+	if (v == 0) {                  /* also -0 */
+		fputs("0", f);
+		return;
+	}
+	for (int prec = 15; prec <= 17; prec++) {
+		snprintf(buf, sizeof buf, "%.*g", prec, v);
+		if (strtod(buf, NULL) == v)
+			break;
+	}
+	fputs(buf, f);
+}
+
+static void vec(FILE *f, struct vec3 v)
+{
+	fputc('<', f);
+	num(f, v.x);
+	fputs(", ", f);
+	num(f, v.y);
+	fputs(", ", f);
+	num(f, v.z);
+	fputc('>', f);
+}
+
+/* A vector in single precision, as mesh2 stores it: %.9g reads back as the same float. */
+static void fvec(FILE *f, struct vec3 v)
+{
+	fprintf(f, "<%.9g,%.9g,%.9g>", (double)(float)v.x, (double)(float)v.y, (double)(float)v.z);
+}
+
+/* A colour with a fourth channel (filter or transmit). */
+static void vec4(FILE *f, struct vec3 v, double w)
+{
+	fputc('<', f);
+	num(f, v.x);
+	fputs(", ", f);
+	num(f, v.y);
+	fputs(", ", f);
+	num(f, v.z);
+	fputs(", ", f);
+	num(f, w);
+	fputc('>', f);
+}
+
+/* A string literal: POV-Ray reads backslash escapes in strings. */
+static void str(FILE *f, const char *s)
+{
+	fputc('"', f);
+	for (; *s; s++) {
+		if (*s == '"' || *s == '\\')
+			fputc('\\', f);
+		fputc(*s, f);
+	}
+	fputc('"', f);
+}
+
+/* A comment's text: one line, whatever the name holds. */
+static void comment_text(FILE *f, const char *s)
+{
+	for (; *s; s++)
+		fputc(*s == '\n' || *s == '\r' ? ' ' : *s, f);
+}
+
+static bool grey(struct vec3 v)
+{
+	return v.x == v.y && v.y == v.z;
+}
+
+static struct vec3 vdiv(struct vec3 a, double b)
+{
+	return v3(a.x / b, a.y / b, a.z / b);
+}
+
+/* a / b per channel, 0 where b is 0 (the channel contributes nothing there) */
+static struct vec3 safe_div(struct vec3 a, struct vec3 b)
+{
+	return v3(b.x != 0 ? a.x / b.x : 0, b.y != 0 ? a.y / b.y : 0, b.z != 0 ? a.z / b.z : 0);
+}
+
+/* --- materials (povray-equivalence.md section 7) --- */
+
+static double pov_ior(double ior)
+{
+	/* ior exactly 1 would continue the ray without counting a trace level (section 6) */
+	return ior == 1 ? 1.0000001 : ior;
+}
+
+/* The single-layer recipe is exact when k_s and k_t are grey, 0 <= t < 1 (or t >= 1
+ * and no diffuse), and emit is zero or follows a plain diffuse that is non-zero in
+ * every channel where emit is. */
+static bool single_layer(const struct material *m)
+{
+	if (!grey(m->specular) || !grey(m->transmit))
+		return false;
+	double t = m->transmit.x;
+	bool no_diffuse = vzero(m->diffuse) && (!m->checker || vzero(m->diffuse2));
+	if (t < 0 || (t >= 1 && !no_diffuse))
+		return false;
+	if (vzero(m->emit))
+		return true;
+	if (m->checker || t >= 1)
+		return false;
+	return (m->emit.x == 0 || m->diffuse.x != 0) && (m->emit.y == 0 || m->diffuse.y != 0) &&
+	       (m->emit.z == 0 || m->diffuse.z != 0);
+}
+
+/* A pigment of diffuse colours divided by div, with transmit t: plain or checker. */
+static void diffuse_pigment(FILE *f, const struct material *m, double div, double t)
+{
+	fputs("pigment { ", f);
+	if (m->checker) {
+		fputs("checker rgbt ", f);
+		vec4(f, vdiv(m->diffuse, div), t);
+		fputs(", rgbt ", f);
+		vec4(f, vdiv(m->diffuse2, div), t);
+		fputs(" scale ", f);
+		num(f, m->checker_size);
+	} else {
+		fputs("rgbt ", f);
+		vec4(f, vdiv(m->diffuse, div), t);
+	}
+	fputs(" }", f);
+}
+
+static void roughness(FILE *f, double shininess)
+{
+	/* POV-Ray's exponent is 1/roughness; roughness 0 is its exponent 0 */
+	fputs(" roughness ", f);
+	num(f, shininess > 0 ? 1 / shininess : 0);
+}
+
+static void fresnel_reflection(FILE *f, const struct material *m)
+{
+	fputs(" reflection { rgb 0, rgb ", f);
+	vec(f, m->reflect);
+	fputs(" fresnel on } conserve_energy", f);
+}
+
+static void write_single_layer(FILE *f, const struct material *m)
+{
+	double t = m->transmit.x;
+	double s = m->specular.x;
+	fputs("  texture {\n    ", f);
+	if (t >= 1) {                  /* no diffuse: nothing to divide by 1 - t */
+		fputs("pigment { rgbt ", f);
+		vec4(f, v3s(0), t);
+		fputs(" }", f);
+	} else
+		diffuse_pigment(f, m, 1 - t, t);
+	fputs("\n    finish { ambient 0", f);
+	if (!vzero(m->emit)) {
+		fputs(" emission rgb ", f);
+		vec(f, safe_div(m->emit, m->diffuse));
+	}
+	fputs(" diffuse 1 brilliance 1 specular ", f);
+	num(f, s);
+	if (s != 0)
+		roughness(f, m->shininess);
+	fputs(" phong 0", f);
+	if (m->fresnel)
+		fresnel_reflection(f, m);
+	else if (!vzero(m->reflect)) {
+		fputs(" reflection { rgb ", f);
+		vec(f, m->reflect);
+		fputs(" }", f);
+	}
+	fputs(" }\n  }\n", f);
+}
+
+/* The general recipe: four layers, bottom first: S (highlight, transmission, Fresnel
+ * reflection), F (filters S by k_s), D (diffuse and plain reflection), E (emission). */
+static void write_layers(FILE *f, const struct material *m)
+{
+	bool has_emit = !vzero(m->emit);
+	bool has_fs = !vzero(m->specular) || !vzero(m->transmit) || m->fresnel;
+	double tE = has_emit ? 0.5 : 1, tD = has_fs ? 0.5 : 0;
+	if (has_fs) {
+		/* k_s' = max(k_s, TINY) where k_t is not 0, everywhere with Fresnel */
+		struct vec3 ks = m->specular, kt = m->transmit;
+		if ((kt.x != 0 || m->fresnel) && ks.x < TINY)
+			ks.x = TINY;
+		if ((kt.y != 0 || m->fresnel) && ks.y < TINY)
+			ks.y = TINY;
+		if ((kt.z != 0 || m->fresnel) && ks.z < TINY)
+			ks.z = TINY;
+		fputs("  texture { pigment { rgbf ", f);                                   /* S */
+		vec4(f, safe_div(kt, ks), 1);
+		fputs(" }\n            finish { ambient 0 diffuse 0 specular 1", f);
+		roughness(f, m->shininess);
+		fputs(" phong 0", f);
+		if (m->fresnel)
+			fresnel_reflection(f, m);
+		fputs(" } }\n", f);
+		fputs("  texture { pigment { rgbf ", f);                                   /* F */
+		vec4(f, vdiv(ks, tE * tD), 1);
+		fputs(" }\n            finish { ambient 0 diffuse 0 specular 0 phong 0 } }\n", f);
+	}
+	fputs("  texture { ", f);                                                     /* D */
+	diffuse_pigment(f, m, (1 - tD) * tE, tD);
+	fputs("\n            finish { ambient 0 diffuse 1 brilliance 1 specular 0 phong 0", f);
+	if (!m->fresnel && !vzero(m->reflect)) {
+		fputs(" reflection { rgb ", f);
+		vec(f, m->reflect);
+		fputs(" }", f);
+	}
+	fputs(" } }\n", f);
+	if (has_emit) {
+		fputs("  texture { pigment { rgbt ", f);                                  /* E */
+		vec4(f, vdiv(m->emit, 1 - tE), tE);
+		fputs(" }\n            finish { ambient 0 emission 1 diffuse 0 specular 0 phong 0 } }\n", f);
+	}
+}
+
+static void write_material(FILE *f, size_t index, const struct material *m)
+{
+	fprintf(f, "// scn material %zu: diffuse ", index);
+	if (m->checker) {
+		fputs("checker(", f);
+		vec(f, m->diffuse);
+		fputs(", ", f);
+		vec(f, m->diffuse2);
+		fputs(", ", f);
+		num(f, m->checker_size);
+		fputs(")", f);
+	} else {
+		vec(f, m->diffuse);
+	}
+	fputs(" specular ", f);
+	vec(f, m->specular);
+	fputs(" shininess ", f);
+	num(f, m->shininess);
+	fputs(" reflect ", f);
+	vec(f, m->reflect);
+	fputs(" transmit ", f);
+	vec(f, m->transmit);
+	fputs(" ior ", f);
+	num(f, m->ior);
+	if (m->fresnel)
+		fputs(" fresnel", f);
+	fputs(" emit ", f);
+	vec(f, m->emit);
+	fputc('\n', f);
+	bool single = single_layer(m);
+	fprintf(f, "#declare scn_material_%zu = material {%s\n", index,
+	        single ? "" : "  // general recipe: layers S, F, D, E (the last is on top)");
+	if (single)
+		write_single_layer(f, m);
+	else
+		write_layers(f, m);
+	if (!vzero(m->transmit) || m->fresnel) {
+		fputs("  interior { ior ", f);
+		num(f, pov_ior(m->ior));
+		fputs(" }\n", f);
+	}
+	fputs("}\n", f);
+}
+
+/* The material of a surface; a checker in object space gets the object's transform: POV-
+ * Ray applies the inverse of a transform to the point, and `inverse` makes that inverse
+ * exactly scn's to_object map. */
+static void material_ref(struct pov *p, uint32_t surface)
+{
+	FILE *f = p->f;
+	const struct surface *s = &p->sc->surfaces[surface];
+	fprintf(f, "material { scn_material_%u", (unsigned)s->material);
+	if (s->to_object >= 0 && p->sc->materials[s->material].checker) {
+		const double (*m)[4] = p->sc->affines[s->to_object].m;
+		fputs(" transform { matrix <", f);
+		for (int col = 0; col < 4; col++)
+			for (int row = 0; row < 3; row++) {
+				num(f, m[row][col]);
+				if (col < 3 || row < 2)
+					fputs(", ", f);
+			}
+		fputs("> inverse }", f);
+	}
+	fputs(" }", f);
+}
+
+/* --- geometry --- */
+
+/* triangle { ... } or smooth_triangle { ... } in double precision, without a material. */
+static void triangle_body(struct pov *p, size_t i)
+{
+	const struct scene *sc = p->sc;
+	const struct triangle *t = &sc->triangles[i];
+	FILE *f = p->f;
+	fputs(t->n[0] == NO_NORMALS ? "triangle { " : "smooth_triangle { ", f);
+	for (int k = 0; k < 3; k++) {
+		vec(f, sc->vertices[t->v[k]]);
+		if (t->n[0] != NO_NORMALS) {
+			fputs(", ", f);
+			vec(f, sc->normals[t->n[k]]);
+		}
+		fputs(k < 2 ? ", " : " ", f);
+	}
+}
+
+static void write_triangle(struct pov *p, size_t i)
+{
+	triangle_body(p, i);
+	material_ref(p, p->sc->triangles[i].surface);
+	fputs(" }\n", p->f);
+}
+
+/* Triangles [first, last) as a union of double-precision triangles. */
+static void write_union(struct pov *p, size_t first, size_t last)
+{
+	FILE *f = p->f;
+	fputs("union {  // a mesh whose faces lie on a checker boundary: in double precision, not as mesh2\n", f);
+	for (size_t i = first; i < last; i++) {
+		fputs("  ", f);
+		triangle_body(p, i);
+		fputs("}\n", f);
+	}
+	fputs("  ", f);
+	material_ref(p, p->sc->triangles[first].surface);
+	fputs("\n}\n", f);
+}
+
+static struct vec3 geometric_normal(const struct scene *sc, const struct triangle *t)
+{
+	struct vec3 a = sc->vertices[t->v[0]], b = sc->vertices[t->v[1]], c = sc->vertices[t->v[2]];
+	return vcross(vsub(b, a), vsub(c, a));
+}
+
+/* Triangles [first, last) of one surface, as a mesh2. */
+static void write_mesh2(struct pov *p, size_t first, size_t last)
+{
+	const struct scene *sc = p->sc;
+	FILE *f = p->f;
+	uint32_t vmin = UINT32_MAX, vmax = 0, nmin = UINT32_MAX, nmax = 0;
+	size_t flat = 0, smooth = 0;
+	bool per_vertex = true;        /* normal k of a face is its vertex k's, shifted alike */
+	for (size_t i = first; i < last; i++) {
+		const struct triangle *t = &sc->triangles[i];
+		for (int k = 0; k < 3; k++) {
+			vmin = t->v[k] < vmin ? t->v[k] : vmin;
+			vmax = t->v[k] > vmax ? t->v[k] : vmax;
+			if (t->n[0] != NO_NORMALS) {
+				nmin = t->n[k] < nmin ? t->n[k] : nmin;
+				nmax = t->n[k] > nmax ? t->n[k] : nmax;
+			}
+		}
+		if (t->n[0] == NO_NORMALS)
+			flat++;
+		else
+			smooth++;
+	}
+	if (smooth)
+		for (size_t i = first; i < last && per_vertex; i++) {
+			const struct triangle *t = &sc->triangles[i];
+			for (int k = 0; k < 3; k++)
+				per_vertex &= t->n[0] != NO_NORMALS && t->n[k] - nmin == t->v[k] - vmin;
+		}
+	per_vertex &= smooth && nmax - nmin == vmax - vmin;
+
+	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(vmax - vmin + 1));
+	for (uint32_t v = vmin; v <= vmax; v++) {
+		fputs(v % 4 == vmin % 4 ? ",\n    " : ", ", f);
+		fvec(f, sc->vertices[v]);
+	}
+	fputs(" }\n", f);
+	if (smooth) {
+		/* a flat face among smooth ones gets three copies of its geometric normal,
+		 * which POV-Ray shades flat */
+		size_t nn = (size_t)(nmax - nmin + 1) + flat;
+		fprintf(f, "  normal_vectors { %zu", nn);
+		size_t k = 0;
+		for (uint32_t n = nmin; n <= nmax; n++, k++) {
+			fputs(k % 4 == 0 ? ",\n    " : ", ", f);
+			fvec(f, sc->normals[n]);
+		}
+		for (size_t i = first; i < last; i++)
+			if (sc->triangles[i].n[0] == NO_NORMALS) {
+				fputs(k++ % 4 == 0 ? ",\n    " : ", ", f);
+				fvec(f, vnorm(geometric_normal(sc, &sc->triangles[i])));
+			}
+		fputs(" }\n", f);
+	}
+	fprintf(f, "  face_indices { %zu", last - first);
+	for (size_t i = first; i < last; i++) {
+		const uint32_t *v = sc->triangles[i].v;
+		fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", (unsigned long)(v[0] - vmin),
+		        (unsigned long)(v[1] - vmin), (unsigned long)(v[2] - vmin));
+	}
+	fputs(" }\n", f);
+	if (smooth && !per_vertex) {
+		fprintf(f, "  normal_indices { %zu", last - first);
+		size_t extra = (size_t)(nmax - nmin + 1);
+		for (size_t i = first; i < last; i++) {
+			const uint32_t *n = sc->triangles[i].n;
+			unsigned long a, b, c;
+			if (n[0] == NO_NORMALS)
+				a = b = c = (unsigned long)extra++;
+			else
+				a = n[0] - nmin, b = n[1] - nmin, c = n[2] - nmin;
+			fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", a, b, c);
+		}
+		fputs(" }\n", f);
+	}
+	fputs("  ", f);
+	material_ref(p, sc->triangles[first].surface);
+	fputs("\n}\n", f);
+}
+
+/* Whether every edge of triangles [first, last) is shared by exactly two of them, once
+ * in each direction: a closed, consistently wound surface, which has an inside. */
+struct edge {
+	uint32_t a, b;
+	int dir;
+};
+
+static int edge_cmp(const void *x, const void *y)
+{
+	const struct edge *e = x, *g = y;
+	if (e->a != g->a)
+		return e->a < g->a ? -1 : 1;
+	if (e->b != g->b)
+		return e->b < g->b ? -1 : 1;
+	return e->dir - g->dir;
+}
+
+static bool closed_surface(const struct scene *sc, size_t first, size_t last)
+{
+	size_t n = 3 * (last - first);
+	struct edge *e = xmalloc(n * sizeof *e);
+	for (size_t i = first, k = 0; i < last; i++)
+		for (int j = 0; j < 3; j++, k++) {
+			uint32_t a = sc->triangles[i].v[j], b = sc->triangles[i].v[(j + 1) % 3];
+			e[k] = a < b ? (struct edge){ a, b, 0 } : (struct edge){ b, a, 1 };
+		}
+	qsort(e, n, sizeof *e, edge_cmp);
+	bool closed = n % 2 == 0;
+	for (size_t k = 0; closed && k < n; k += 2)
+		closed = e[k].a == e[k + 1].a && e[k].b == e[k + 1].b && e[k].dir == 0 && e[k + 1].dir == 1 &&
+		         (k + 2 >= n || e[k + 2].a != e[k].a || e[k + 2].b != e[k].b);
+	free(e);
+	return closed;
+}
+
+/* The point p in the checker's own space of surface s. */
+static struct vec3 object_point(const struct scene *sc, const struct surface *s, struct vec3 p)
+{
+	if (s->to_object < 0)
+		return p;
+	const double (*m)[4] = sc->affines[s->to_object].m;
+	return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+	          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+	          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+}
+
+/* Whether a face of triangles [first, last) lies in a plane where its checker changes
+ * colour. Its points then sit on the boundary up to rounding: scn's double precision
+ * and the checker's 1e-10 bias decide them, but mesh2's single-precision vertices move
+ * the face off the plane by about 1e-7, to either side. */
+static bool on_checker_boundary(const struct scene *sc, size_t first, size_t last)
+{
+	const struct surface *s = &sc->surfaces[sc->triangles[first].surface];
+	const struct material *m = &sc->materials[s->material];
+	if (!m->checker)
+		return false;
+	for (size_t i = first; i < last; i++) {
+		struct vec3 c[3];
+		for (int k = 0; k < 3; k++)
+			c[k] = vscale(object_point(sc, s, sc->vertices[sc->triangles[i].v[k]]), 1 / m->checker_size);
+		for (int axis = 0; axis < 3; axis++) {
+			double a = vget(c[0], axis), b = vget(c[1], axis), d = vget(c[2], axis);
+			double r = round(a);
+			if (fabs(a - r) < 1e-3 && fabs(b - r) < 1e-3 && fabs(d - r) < 1e-3)
+				return true;
+		}
+	}
+	return false;
+}
+
+/* The runs of triangles that share a surface: one object each. */
+static size_t run_end(const struct scene *sc, size_t first)
+{
+	size_t last = first + 1;
+	while (last < sc->ntriangles && sc->triangles[last].surface == sc->triangles[first].surface)
+		last++;
+	return last;
+}
+
+/* Whether POV-Ray keeps smooth face i: it drops a smooth_triangle unless its three
+ * normals lie strictly on one side of it ("Degenerate triangle"); mesh2 keeps any. */
+static bool smooth_kept(const struct scene *sc, size_t i)
+{
+	const struct triangle *t = &sc->triangles[i];
+	if (t->n[0] == NO_NORMALS)
+		return true;
+	struct vec3 g = geometric_normal(sc, t);
+	double d0 = vdot(g, sc->normals[t->n[0]]), d1 = vdot(g, sc->normals[t->n[1]]),
+	       d2 = vdot(g, sc->normals[t->n[2]]);
+	return (d0 > 0 && d1 > 0 && d2 > 0) || (d0 < 0 && d1 < 0 && d2 < 0);
+}
+
+/* How each run of triangles is written (at its first triangle's index), and what POV-
+ * Ray will not compute as scn does, found before anything is written so that the
+ * header can say it. */
+static void analyse(struct pov *p)
+{
+	const struct scene *sc = p->sc;
+	size_t kept_as_mesh2 = 0, open = 0, boundary = 0;
+	for (size_t first = 0; first < sc->ntriangles;) {
+		size_t last = run_end(sc, first);
+		const struct triangle *t = &sc->triangles[first];
+		const struct material *m = &sc->materials[sc->surfaces[t->surface].material];
+		bool all_kept = true;
+		for (size_t i = first; i < last && all_kept; i++)
+			all_kept = smooth_kept(sc, i);
+		if (last - first == 1) {
+			/* a lone triangle in double precision, unless POV-Ray would drop it */
+			p->how[first] = all_kept ? WRITE_TRIANGLE : WRITE_MESH2;
+			kept_as_mesh2 += !all_kept;
+		} else if (on_checker_boundary(sc, first, last)) {
+			/* a union of triangles has no inside to refract through */
+			bool solid = !vzero(m->transmit) && m->ior != 1;
+			p->how[first] = all_kept && !solid ? WRITE_UNION : WRITE_MESH2;
+			boundary += p->how[first] == WRITE_MESH2;
+		} else {
+			p->how[first] = WRITE_MESH2;
+		}
+		if (!vzero(m->transmit) && m->ior != 1 && (last - first < 4 || !closed_surface(sc, first, last)))
+			open++;
+		first = last;
+	}
+	if (kept_as_mesh2)
+		note(p, "// %zu smooth triangle(s) have vertex normals on both sides of the face: POV-Ray drops such"
+		        " a smooth_triangle, so they are written as one-face mesh2 objects, which it keeps",
+		     kept_as_mesh2);
+	if (boundary)
+		note(p, "// %zu mesh(es) have faces on a boundary of their checker and are kept as mesh2: its single-"
+		        "precision vertices move such faces off the boundary to either side (cells may swap there)",
+		     boundary);
+	if (open)
+		note(p, "// %zu refracting triangle object(s) are not closed, consistently wound surfaces: POV-Ray"
+		        " enters such an object at its first hit and leaves at the next, while scn decides by the side"
+		        " of each face (not pixel-exact where rays refract through them)",
+		     open);
+	size_t nested = 0, ntransmit = 0;
+	size_t *glass = xmalloc((sc->nspheres ? sc->nspheres : 1) * sizeof *glass);
+	for (size_t i = 0; i < sc->nspheres; i++)
+		if (!vzero(sc->materials[sc->surfaces[sc->spheres[i].surface].material].transmit))
+			glass[ntransmit++] = i;
+	/* pairs of transmitting spheres: a bounded search, enough for any hand-made scene */
+	for (size_t i = 0; i < ntransmit && ntransmit <= 4096; i++) {
+		const struct sphere *a = &sc->spheres[glass[i]];
+		for (size_t j = 0; j < ntransmit; j++) {
+			const struct sphere *b = &sc->spheres[glass[j]];
+			if (j != i && vlen(vsub(a->center, b->center)) < a->radius + b->radius) {
+				nested++;
+				break;
+			}
+		}
+	}
+	free(glass);
+	size_t touching = 0;
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		const struct sphere *a = &sc->spheres[i];
+		bool touch = false;
+		for (size_t k = 0; k < sc->nplanes && !touch; k++)
+			touch = fabs(fabs(vdot(sc->planes[k].normal, a->center) - sc->planes[k].offset) - a->radius) < CONTACT;
+		for (size_t j = 0; j < sc->nspheres && sc->nspheres <= 4096 && !touch; j++)
+			touch = j != i && fabs(vlen(vsub(a->center, sc->spheres[j].center)) - a->radius -
+			                       sc->spheres[j].radius) < CONTACT;
+		touching += touch;
+	}
+	if (touching)
+		note(p, "// %zu sphere(s) touch a plane or another sphere: POV-Ray ignores hits closer than 1e-4 and"
+		        " shadow occluders closer than 1e-3, scn has no such absolute tolerances (pixels whose rays pass"
+		        " near a contact may differ)",
+		     touching);
+	if (nested)
+		note(p, "// %zu transmitting sphere(s) overlap another: POV-Ray refracts by the ratio of the two"
+		        " objects' iors where a ray passes from one into the other, scn by each surface's ior against"
+		        " air (not pixel-exact there)",
+		     nested);
+}
+
+/* --- camera, sky, lights --- */
+
+/* The centre and radius of a ball holding everything finite in the scene and reaching
+ * every plane. */
+static void scene_ball(const struct scene *sc, struct vec3 *centre, double *radius)
+{
+	struct vec3 lo = sc->camera.eye, hi = sc->camera.eye;
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		lo = vmin(lo, vsub(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+		hi = vmax(hi, vadd(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+	}
+	for (size_t i = 0; i < sc->nvertices; i++) {
+		lo = vmin(lo, sc->vertices[i]);
+		hi = vmax(hi, sc->vertices[i]);
+	}
+	for (size_t i = 0; i < sc->nlights; i++)
+		if (sc->lights[i].kind == LIGHT_POINT) {
+			lo = vmin(lo, sc->lights[i].pos);
+			hi = vmax(hi, sc->lights[i].pos);
+		}
+	*centre = vscale(vadd(lo, hi), 0.5);
+	double r = vlen(vsub(hi, lo)) / 2;
+	for (size_t i = 0; i < sc->nplanes; i++)
+		r = fmax(r, fabs(sc->planes[i].offset - vdot(sc->planes[i].normal, *centre)));
+	*radius = r;
+}
+
+static void write_camera(struct pov *p)
+{
+	const struct camera *c = &p->sc->camera;
+	const struct pov_export_options *o = p->opt;
+	FILE *f = p->f;
+	bool given = o->look_at && o->up && o->fov > 0;
+	fputs("camera { perspective location ", f);
+	vec(f, c->eye);
+	fputs(" look_at ", f);
+	vec(f, given ? v3a(o->look_at) : vadd(c->eye, c->dir));
+	fputs(" sky ", f);
+	vec(f, given ? v3a(o->up) : c->up);
+	fprintf(f, " right x*%d/%d up y angle ", c->width, c->height);
+	num(f, given ? o->fov : 2 * atan(c->tan_half) * (180 / M_PI));
+	fputs(" }\n", f);
+}
+
+/* The sky image's path as the .pov must name it: relative to the .pov's folder when
+ * both resolve, else (or without a folder) absolute. */
+static char *image_reference(const char *image, const char *pov_dir)
+{
+	char *t = realpath(image, NULL);
+	char *d = pov_dir ? realpath(*pov_dir ? pov_dir : ".", NULL) : NULL;
+	if (!t) {
+		free(d);
+		if (image[0] == '/')
+			return xstrdup(image);
+		char cwd[PATH_MAX];
+		if (!getcwd(cwd, sizeof cwd))
+			return xstrdup(image);
+		char *abs = xmalloc(strlen(cwd) + strlen(image) + 2);
+		sprintf(abs, "%s/%s", cwd, image);
+		return abs;
+	}
+	if (!d)
+		return t;
+	size_t dl = strlen(d);
+	char *ds = xmalloc(dl + 2);
+	memcpy(ds, d, dl + 1);
+	if (dl == 0 || ds[dl - 1] != '/')
+		strcpy(ds + dl, "/");
+	size_t k = 0;                  /* the common prefix, up to a '/' */
+	for (size_t i = 0; t[i] && ds[i] && t[i] == ds[i]; i++)
+		if (t[i] == '/')
+			k = i + 1;
+	size_t ups = 0;
+	for (const char *s = ds + k; *s; s++)
+		ups += *s == '/';
+	char *rel = xmalloc(3 * ups + strlen(t + k) + 1);
+	rel[0] = '\0';
+	for (size_t i = 0; i < ups; i++)
+		strcat(rel, "../");
+	strcat(rel, t + k);
+	free(t);
+	free(d);
+	free(ds);
+	return rel;
+}
+
+enum sky_file { SKY_FILE_PNG, SKY_FILE_EXR, SKY_FILE_PPM };
+
+struct png_probe {
+	jmp_buf jmp;
+	FILE *fp;
+};
+
+static void probe_error(png_structp png, png_const_charp msg)
+{
+	(void)msg;
+	longjmp(((struct png_probe *)png_get_error_ptr(png))->jmp, 1);
+}
+
+static void probe_warning(png_structp png, png_const_charp msg)
+{
+	(void)png;
+	(void)msg;
+}
+
+/* A PNG's transfer curve as scn's reader (png.c) decides it, by libpng's own view of
+ * the chunks: an sRGB chunk is the sRGB curve (0), else a gAMA chunk is the power law
+ * of its value, else sRGB. Returns 0 or errno. */
+static int png_file_gamma(FILE *fp, double *gamma)
+{
+	struct png_probe pr = { .fp = fp };
+	png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &pr, probe_error, probe_warning);
+	png_infop info = png ? png_create_info_struct(png) : NULL;
+	if (!info) {
+		png_destroy_read_struct(&png, NULL, NULL);
+		return ENOMEM;
+	}
+	if (setjmp(pr.jmp)) {
+		png_destroy_read_struct(&png, &info, NULL);
+		return EINVAL;
+	}
+	png_init_io(png, fp);
+	png_set_user_limits(png, 0x7fffffff, 0x7fffffff);
+	png_read_info(png, info);
+	*gamma = 0;
+	png_fixed_point file_gamma;
+	if (!png_get_valid(png, info, PNG_INFO_sRGB) && png_get_valid(png, info, PNG_INFO_gAMA) &&
+	    png_get_gAMA_fixed(png, info, &file_gamma) && file_gamma > 0)
+		*gamma = file_gamma / 100000.0;
+	png_destroy_read_struct(&png, &info, NULL);
+	return 0;
+}
+
+/* Whether an OpenEXR file (its header in buf) stores a channel as 32-bit float or
+ * integer: POV-Ray reads every EXR through half-float RGBA. */
+static bool exr_not_half(const unsigned char *buf, size_t n)
+{
+	size_t i = 8;                  /* after the magic number and the version */
+	while (i < n && buf[i]) {
+		const char *name = (const char *)buf + i;
+		size_t nl = strnlen(name, n - i);
+		const char *type = name + nl + 1;
+		if (i + nl + 1 >= n)
+			return false;
+		size_t tl = strnlen(type, n - (i + nl + 1));
+		size_t at = i + nl + 1 + tl + 1;
+		if (at + 4 > n)
+			return false;
+		uint32_t size = buf[at] | buf[at + 1] << 8 | buf[at + 2] << 16 | (uint32_t)buf[at + 3] << 24;
+		at += 4;
+		if (strcmp(name, "channels") == 0 && strcmp(type, "chlist") == 0) {
+			size_t end = at + size < n ? at + size : n;
+			size_t c = at;
+			while (c < end && buf[c]) {
+				c += strnlen((const char *)buf + c, end - c) + 1;
+				if (c + 16 > end)
+					return false;
+				if (buf[c] != 1)   /* pixel type: 0 uint, 1 half, 2 float */
+					return true;
+				c += 16;
+			}
+			return false;
+		}
+		if (size > n - at)
+			return false;
+		i = at + size;
+	}
+	return false;
+}
+
+/* The sky image's format (from its first bytes, as scn's reader tells them) and, for a
+ * PNG, its transfer curve. */
+static int sky_file_kind(const char *path, enum sky_file *kind, double *gamma, bool *not_half, char *err,
+                         size_t errlen)
+{
+	FILE *fp = fopen(path, "rb");
+	if (!fp) {
+		int e = errno;
+		snprintf(err, errlen, "cannot read the skybox image '%s': %s", path, strerror(e));
+		return e;
+	}
+	unsigned char magic[8] = { 0 };
+	size_t n = fread(magic, 1, sizeof magic, fp);
+	static const unsigned char png_magic[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
+	static const unsigned char exr_magic[4] = { 0x76, 0x2f, 0x31, 0x01 };
+	int rc = 0;
+	*gamma = 0;
+	*not_half = false;
+	if (n >= 8 && memcmp(magic, png_magic, 8) == 0) {
+		*kind = SKY_FILE_PNG;
+		rewind(fp);
+		rc = png_file_gamma(fp, gamma);
+	} else if (n >= 4 && memcmp(magic, exr_magic, 4) == 0) {
+		*kind = SKY_FILE_EXR;
+		unsigned char header[65536];
+		rewind(fp);
+		size_t hn = fread(header, 1, sizeof header, fp);
+		*not_half = exr_not_half(header, hn);
+	} else if (n >= 2 && magic[0] == 'P' && magic[1] == '6') {
+		*kind = SKY_FILE_PPM;
+	} else {
+		rc = EINVAL;
+	}
+	fclose(fp);
+	if (rc)
+		snprintf(err, errlen, "cannot read the skybox image '%s' again: %s", path,
+		         rc == EINVAL ? "not a PNG, OpenEXR or binary PPM image" : strerror(rc));
+	return rc;
+}
+
+static void write_sky(struct pov *p)
+{
+	const struct sky *sky = &p->sc->sky;
+	FILE *f = p->f;
+	fputs("background { rgb ", f);
+	vec(f, sky->kind == SKY_CONSTANT ? sky->color : v3s(0));
+	fputs(" }\n", f);
+	if (sky->kind == SKY_ZENITH_HORIZON) {
+		/* t = clamp(d.y, 0, 1); a plain gradient y would wrap below the horizon */
+		fputs("sky_sphere { pigment { function { min(max(y, 0), 1) } color_map { [0 rgb ", f);
+		vec(f, sky->horizon);
+		fputs("] [1 rgb ", f);
+		vec(f, sky->color);
+		fputs("] } } }\n", f);
+	} else if (sky->kind == SKY_LATLONG) {
+		enum sky_file kind = (enum sky_file)p->sky_kind;
+		double gamma = p->sky_gamma;
+		char *ref = image_reference(p->opt->sky_image, p->opt->pov_dir);
+		fputs("sky_sphere { pigment { image_map { ", f);
+		fputs(kind == SKY_FILE_PNG ? "png " : kind == SKY_FILE_EXR ? "exr " : "ppm ", f);
+		str(f, ref);
+		free(ref);
+		/* decode as scn does: EXR is linear; PPM is sRGB; a PNG by its chunks */
+		if (kind == SKY_FILE_PPM || (kind == SKY_FILE_PNG && gamma == 0))
+			fputs(" gamma srgb", f);
+		else if (kind == SKY_FILE_PNG) {
+			fputs(" gamma ", f);
+			num(f, 1 / gamma);
+		}
+		fputs(" map_type 1 interpolate 2 } }", f);
+		if (sky->intensity != 1) {
+			fputs(" emission rgb ", f);
+			num(f, sky->intensity);
+		}
+		double deg = p->opt->sky_rotate ? *p->opt->sky_rotate : atan2(sky->rot_sin, sky->rot_cos) * (180 / M_PI);
+		if (deg != 0) {
+			fputs(" rotate <0, ", f);
+			num(f, deg);
+			fputs(", 0>", f);
+		}
+		fputs(" }\n", f);
+	}
+}
+
+static void write_lights(struct pov *p)
+{
+	const struct scene *sc = p->sc;
+	FILE *f = p->f;
+	struct vec3 centre;
+	double radius;
+	scene_ball(sc, &centre, &radius);
+	double far = fmax(FAR_MIN, FAR_RADII * radius);
+	for (size_t i = 0; i < sc->nlights; i++) {
+		const struct light *l = &sc->lights[i];
+		fputs("light_source { ", f);
+		if (l->kind == LIGHT_POINT) {
+			vec(f, l->pos);
+			fputs(" color rgb ", f);
+			vec(f, l->color);
+		} else {
+			/* far up-wind; shading uses exactly the direction to point_at */
+			vec(f, vadd(centre, vscale(l->to_light, far)));
+			fputs(" color rgb ", f);
+			vec(f, l->color);
+			fputs(" parallel point_at ", f);
+			vec(f, centre);
+		}
+		if (l->shadowless)
+			fputs(" shadowless", f);
+		fputs(" }\n", f);
+	}
+}
+
+/* --- the command line --- */
+
+/* A word for the shell: quoted unless it is plain. */
+static void shell_word(FILE *f, const char *prefix, const char *s)
+{
+	bool plain = *s != '\0';
+	for (const char *c = s; *c; c++)
+		plain &= (*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
+		         strchr("._-/+,=@%:", *c) != NULL;
+	if (plain) {
+		fprintf(f, "%s%s", prefix, s);
+		return;
+	}
+	fprintf(f, "'%s", prefix);
+	for (const char *c = s; *c; c++) {
+		if (*c == '\'')
+			fputs("'\\''", f);
+		else
+			fputc(*c == '\n' ? ' ' : *c, f);
+	}
+	fputc('\'', f);
+}
+
+static void write_header(struct pov *p)
+{
+	const struct scene *sc = p->sc;
+	const struct sampling *sp = &sc->sampling;
+	FILE *f = p->f;
+	const char *name = p->opt->pov_name ? p->opt->pov_name : "scene.pov";
+	size_t len = strlen(name);
+	size_t stem = len > 4 && strcmp(name + len - 4, ".pov") == 0 ? len - 4 : len;
+	char *png = xmalloc(stem + 5);
+	memcpy(png, name, stem);
+	memcpy(png + stem, ".png", 5);
+
+	int scale = 1;                 /* grid: render n times the size and average n x n blocks */
+	char aa[64] = "-A";
+	if (sp->count > 1 && sp->kind == SAMPLE_GRID) {
+		scale = (int)lround(sqrt((double)sp->count));
+	} else if (sp->count > 1) {
+		/* +AM2 +Rd samples a (2^(d-1)+1)^2 lattice over the pixel: about count samples */
+		int d = 1 + (int)lround(log2(sqrt((double)sp->count)));
+		d = d < 1 ? 1 : d > 9 ? 9 : d;
+		snprintf(aa, sizeof aa, "+A0.0 +AM2 +R%d -J", d);
+	}
+
+	fputs("// ", f);
+	comment_text(f, name);
+	fputs(": the POV-Ray 3.7 equivalent of ", f);
+	comment_text(f, p->opt->source ? p->opt->source : "an scn scene");
+	if (p->opt->generator) {
+		fputs(", written by ", f);
+		comment_text(f, p->opt->generator);
+	}
+	fputs(".\n// Render it in this file's folder (16-bit linear PNG, povray-equivalence.md):\n// Render: povray -D ", f);
+	fprintf(f, "%s +W%ld +H%ld +FN16 File_Gamma=1.0 ", aa, (long)sc->camera.width * scale,
+	        (long)sc->camera.height * scale);
+	shell_word(f, "+I", name);
+	fputc(' ', f);
+	shell_word(f, "+O", png);
+	fputc('\n', f);
+	free(png);
+
+	static const char *const pattern[] = { "center", "grid", "random", "jittered", "poisson" };
+	if (scale > 1)
+		fprintf(f,
+		        "// samples { count %d pattern grid }: that renders %d x %d, one ray through each pixel centre;"
+		        " the mean of each %d x %d block of its pixels is the %d x %d image (scn diff SCN.png THIS.png"
+		        " --downsample %d), except where a block has pixels brighter than 1, which POV-Ray clips before"
+		        " the mean is taken.\n",
+		        sp->count, sc->camera.width * scale, sc->camera.height * scale, scale, scale, sc->camera.width,
+		        sc->camera.height, scale);
+	else if (sp->kind != SAMPLE_CENTER && sp->kind != SAMPLE_GRID)
+		fprintf(f,
+		        "// samples { count %d pattern %s }: NOT pixel-exact: POV-Ray cannot place scn's random samples;"
+		        " %s is its nearest anti-aliasing.\n",
+		        sp->count, pattern[sp->kind], aa);
+	if (sp->target_error > 0 && sp->count > 1)
+		fprintf(f, "// target_error %g: NOT pixel-exact: scn stops sampling a pixel early where its error is small,"
+		           " POV-Ray does not.\n", sp->target_error);
+	if (p->notes)
+		fputs(p->notes, f);
+	fprintf(f, "#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level %d adc_bailout 0"
+	           " ambient_light rgb 0 }\n", sc->max_depth);
+}
+
+static void write_objects(struct pov *p)
+{
+	const struct scene *sc = p->sc;
+	FILE *out = p->f;
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		fputs("sphere { ", out);
+		vec(out, sc->spheres[i].center);
+		fputs(", ", out);
+		num(out, sc->spheres[i].radius);
+		fputc(' ', out);
+		material_ref(p, sc->spheres[i].surface);
+		fputs(" }\n", out);
+	}
+	for (size_t i = 0; i < sc->nplanes; i++) {
+		fputs("plane { ", out);
+		vec(out, sc->planes[i].normal);
+		fputs(", ", out);
+		num(out, sc->planes[i].offset);
+		fputc(' ', out);
+		material_ref(p, sc->planes[i].surface);
+		fputs(" }\n", out);
+	}
+	for (size_t first = 0; first < sc->ntriangles;) {
+		size_t last = run_end(sc, first);
+		if (p->how[first] == WRITE_TRIANGLE)
+			write_triangle(p, first);
+		else if (p->how[first] == WRITE_UNION)
+			write_union(p, first, last);
+		else
+			write_mesh2(p, first, last);
+		first = last;
+	}
+}
+
+/* pov_export, naming the output what in its messages. */
+static int export_to(const struct scene *sc, const struct pov_export_options *opt, FILE *out, const char *what,
+                     char *err, size_t errlen)
+{
+	static const struct pov_export_options none = { 0 };
+	struct pov p = { .f = out, .sc = sc, .opt = opt ? opt : &none };
+	if (errlen)
+		err[0] = '\0';
+	if (sc->sky.kind == SKY_LATLONG) {
+		if (!p.opt->sky_image) {
+			snprintf(err, errlen, "the skybox image's file name is not known");
+			return EINVAL;
+		}
+		enum sky_file kind;
+		bool not_half;
+		int e = sky_file_kind(p.opt->sky_image, &kind, &p.sky_gamma, &not_half, err, errlen);
+		if (e)
+			return e;
+		p.sky_kind = (int)kind;
+		if (not_half)
+			note(&p, "// The skybox image has 32-bit float channels: POV-Ray reads OpenEXR as half floats, so"
+			         " its sky differs by up to about 2.4e-4 of each value (half-float images agree exactly)");
+	}
+	p.how = xcalloc(sc->ntriangles ? sc->ntriangles : 1, sizeof *p.how);
+	analyse(&p);
+	write_header(&p);
+	write_camera(&p);
+	write_sky(&p);
+	write_lights(&p);
+	for (size_t i = 0; i < sc->nmaterials; i++)
+		write_material(out, i, &sc->materials[i]);
+	write_objects(&p);
+	free(p.how);
+	free(p.notes);
+	int rc = 0;
+	errno = 0;
+	if (fflush(out) != 0 || ferror(out)) {
+		rc = errno ? errno : EIO;
+		snprintf(err, errlen, "cannot write %s: %s", what, strerror(rc));
+	}
+	return rc;
+}
+
+int pov_export(const struct scene *sc, const struct pov_export_options *opt, FILE *out, char *err, size_t errlen)
+{
+	return export_to(sc, opt, out, "the POV-Ray scene", err, errlen);
+}
+
+int pov_export_file(const struct scene *sc, const struct pov_export_options *opt, const char *path, char *err,
+                    size_t errlen)
+{
+	static unsigned counter;
+	const char *slash = strrchr(path, '/');
+	int dirlen = slash ? (int)(slash - path + 1) : 0;
+	size_t size = (size_t)dirlen + 64;
+	char *tmp = xmalloc(size);
+	int fd = -1;
+	for (int attempt = 0; attempt < 100 && fd < 0; attempt++) {
+		snprintf(tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
+		fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+		if (fd < 0 && errno != EEXIST)
+			break;
+	}
+	if (fd < 0) {
+		int e = errno;
+		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
+		free(tmp);
+		return e;
+	}
+	FILE *f = fdopen(fd, "w");
+	if (!f) {
+		int e = errno;
+		close(fd);
+		unlink(tmp);
+		free(tmp);
+		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
+		return e;
+	}
+	char *what = xmalloc(strlen(path) + 3);
+	sprintf(what, "'%s'", path);
+	int rc = export_to(sc, opt, f, what, err, errlen);
+	free(what);
+	if (rc == 0 && fsync(fd) != 0 && errno != EINVAL)
+		rc = errno;
+	if (fclose(f) != 0 && rc == 0)
+		rc = errno ? errno : EIO;
+	if (rc == 0 && rename(tmp, path) != 0)
+		rc = errno;
+	if (rc != 0) {
+		if (errlen && !err[0])
+			snprintf(err, errlen, "cannot write '%s': %s", path, strerror(rc));
+		unlink(tmp);
+	}
+	free(tmp);
+	return rc;
+}

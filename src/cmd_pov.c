@@ -1,0 +1,98 @@
+/* cmd_pov.c: scn pov: load and lower a scene, then write the POV-Ray 3.7 scene that
+ * renders the same image (render/pov_export.c), atomically, or to standard output. */
+#include "config.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "diag.h"
+#include "load.h"
+#include "lower.h"
+#include "pov_export.h"
+#include "scene_desc.h"
+#include "xalloc.h"
+
+/* The default output: the scene's name with .pov, in the current directory. */
+static char *default_output(const char *scene)
+{
+	if (strcmp(scene, "-") == 0)
+		return xstrdup("stdin.pov");
+	const char *base = strrchr(scene, '/');
+	base = base ? base + 1 : scene;
+	const char *dot = strrchr(base, '.');
+	size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+	char *out = xmalloc(n + 5);
+	memcpy(out, base, n);
+	memcpy(out + n, ".pov", 5);
+	return out;
+}
+
+int cmd_pov(const struct command *self, int argc, char **argv)
+{
+	const char *scene = NULL, *out_arg = NULL;
+	for (int i = 1; i < argc; i++) {
+		const char *opt = argv[i];
+		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
+			return cli_help(self);
+		if (strcmp(opt, "-o") == 0) {
+			if (!(out_arg = cli_value(argc, argv, &i)))
+				return cli_usage_error(self, "option '-o' needs a value");
+		} else if (opt[0] == '-' && opt[1] != '\0') {
+			return cli_usage_error(self, "unknown option '%s' for pov", opt);
+		} else if (scene) {
+			return cli_usage_error(self, "more than one scene given ('%s')", opt);
+		} else {
+			scene = opt;
+		}
+	}
+	if (!scene)
+		return cli_usage_error(self, "no scene given");
+	bool to_stdout = out_arg && strcmp(out_arg, "-") == 0;
+	char *out = to_stdout || !out_arg ? default_output(scene) : xstrdup(out_arg);
+
+	struct diag d;
+	diag_init(&d, stderr);
+	struct scene_desc desc;
+	struct scene sc = { 0 };
+	struct lower_times times;
+	int rc = (int)lang_load_scene(&d, scene, &desc, NULL);
+	if (rc == 0 && !lang_lower(&d, &desc, &sc, &times))
+		rc = EXIT_SCENE;
+	diag_flush(&d);
+	if (rc == 0) {
+		/* the .pov names the sky image relative to its own folder; on standard output,
+		 * whose folder is unknown, by its absolute path */
+		const char *slash = strrchr(out, '/');
+		char *dir = xstrdup(slash ? out : "");
+		if (slash)
+			dir[slash - out == 0 ? 1 : slash - out] = '\0';
+		char version[64];
+		snprintf(version, sizeof version, "scn %s", PACKAGE_VERSION);
+		struct pov_export_options po = {
+			.pov_name = slash ? slash + 1 : out,
+			.source = strcmp(scene, "-") == 0 ? "standard input" : scene,
+			.generator = version,
+			.sky_image = desc.skybox.kind == SKY_IMAGE ? desc.skybox.image_path : NULL,
+			.pov_dir = to_stdout ? NULL : dir,
+			.look_at = desc.camera.look_at,
+			.up = desc.camera.up,
+			.fov = desc.camera.fov,
+			.sky_rotate = &desc.skybox.rotate,
+		};
+		char err[1024];
+		int e = to_stdout ? pov_export(&sc, &po, stdout, err, sizeof err)
+		                  : pov_export_file(&sc, &po, out, err, sizeof err);
+		if (e != 0) {
+			fprintf(stderr, "scn: %s\n", err);
+			rc = EXIT_IO;
+		}
+		free(dir);
+	}
+	scene_free(&sc);
+	scene_desc_free(&desc);
+	diag_fini(&d);
+	free(out);
+	return rc;
+}
