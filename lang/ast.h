@@ -18,6 +18,7 @@ enum ast_kind {
 	/* statements */
 	AST_LET, AST_INCLUDE, AST_FOR,
 	AST_BLOCK_STMT, /* camera, light, material NAME, sphere, ..., samples { }, samples N, max_depth N */
+	AST_UNKNOWN_STMT, /* a statement that starts with a name: u.item holds it, for the message */
 	/* parts of a block */
 	AST_ITEM,
 };

@@ -31,13 +31,16 @@ struct checker {
 	struct name_entry **buckets;
 	size_t nbuckets, nentries;
 	unsigned scope;            /* depth of the current scope; the file scope is 1 */
-	struct binding *scope_bindings[LANG_MAX_NESTING + 2];
+	struct binding *scope_bindings[2 * LANG_MAX_NESTING + 2]; /* a loop opens two */
 	unsigned nslots;
 	unsigned loop_depth;
 	int include_depth;
 	unsigned nincludes;        /* files read by includes so far, against LANG_MAX_INCLUDES */
 	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
 	struct ast *once[KW_COUNT_ALL]; /* camera, skybox, samples, max_depth seen so far */
+	struct ast_list *root;     /* the scene file's statements, to find definitions that come late */
+	const char *defining;      /* the material whose block is being checked, or NULL */
+	bool include_failed;       /* an include could not be read: its names are unknown, not wrong */
 };
 
 /* FNV-1a with a final mix: unlike h * 33 + c, whose collisions a scene can spell
@@ -129,7 +132,8 @@ static void suggest_init(struct suggestion *s, const char *name)
 	size_t len = strlen(name);
 	s->name = name;
 	s->best = NULL;
-	s->dist = len <= 3 ? 1 : len <= 7 ? 2 : 3; /* the most edits still worth suggesting */
+	/* the most edits still worth suggesting: none for one or two letters ('r' is not 'i') */
+	s->dist = len <= 2 ? 0 : len <= 4 ? 1 : len <= 8 ? 2 : 3;
 	s->dist++;
 }
 
@@ -174,7 +178,8 @@ static void push_scope(struct checker *c)
 static void pop_scope(struct checker *c)
 {
 	for (struct binding *b = c->scope_bindings[c->scope]; b; b = b->scope_next) {
-		if (!b->used && b->kind != BIND_LOOP && c->diag->errors == 0)
+		/* nor for what an included file defines: a library need not use all it offers */
+		if (!b->used && b->kind != BIND_LOOP && c->diag->errors == 0 && !diag_source_at(c->diag, b->span.start)->included)
 			diag_warning(c->diag, b->span, b->kind == BIND_MATERIAL ? "material '%s' is never used"
 			                                                         : "'%s' is never used", b->name);
 		b->entry->top = b->shadowed;
@@ -234,6 +239,55 @@ static bool arithmetic(struct checker *c, struct ast *e, enum ast_type t)
 	return false;
 }
 
+/* The let or material of that name defined after offset 'after' in the same file,
+ * outside includes, or NULL: for "defined later" notes. */
+static const struct ast *later_definition(const struct ast_list *stmts, const char *name, uint32_t after,
+                                          const struct source *src, const struct diag *d)
+{
+	for (size_t i = 0; i < stmts->n; i++) {
+		const struct ast *s = stmts->v[i];
+		const char *defined = s->kind == AST_LET ? s->u.let.name
+		                    : s->kind == AST_BLOCK_STMT && s->u.stmt.kw == KW_MATERIAL ? s->u.stmt.name : NULL;
+		if (defined && strcmp(defined, name) == 0 && s->span.start > after && diag_source_at(d, s->span.start) == src)
+			return s;
+		if (s->kind == AST_FOR) {
+			const struct ast *found = later_definition(&s->u.loop.body, name, after, src, d);
+			if (found)
+				return found;
+		}
+	}
+	return NULL;
+}
+
+/* Reports a name that means nothing here, with the most useful hint. */
+static void unknown_name(struct checker *c, struct span at, const char *name, bool material)
+{
+	/* it may well be defined in a file that could not be read; and once the run has
+	 * stopped nothing prints, so the searches below (all names, all statements) are skipped */
+	if (c->include_failed || diag_stopped(c->diag))
+		return;
+	const char *what = material ? "material" : "name";
+	if (!material && (strcmp(name, "x") == 0 || strcmp(name, "y") == 0 || strcmp(name, "z") == 0)) {
+		diag_error(c->diag, at, "unknown name '%s' (scn has no x, y, z vectors: write <1, 0, 0>, <0, 1, 0>, <0, 0, 1>)",
+		           name);
+		return;
+	}
+	if (material && c->defining && strcmp(name, c->defining) == 0) {
+		diag_error(c->diag, at, "a material cannot be like itself");
+		return;
+	}
+	struct suggestion s;
+	char buf[96];
+	suggest_init(&s, name);
+	suggest_visible(c, &s, material);
+	diag_error(c->diag, at, "unknown %s '%s'%s", what, name, suggest_text(&s, buf, sizeof buf));
+	const struct ast *later = c->root ? later_definition(c->root, name, at.start, diag_source_at(c->diag, at.start), c->diag)
+	                                  : NULL;
+	if (later)
+		diag_note(c->diag, later->kind == AST_LET ? later->u.let.name_span : later->u.stmt.name_span,
+		          "'%s' is defined here, after its use; a name is visible only after its definition", name);
+}
+
 static enum ast_type check_ident(struct checker *c, struct ast *e)
 {
 	const char *name = e->u.ident.name;
@@ -256,12 +310,7 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 		diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
 		return TYPE_NONE;
 	}
-	struct suggestion s;
-	char buf[96];
-	suggest_init(&s, name);
-	if (!diag_stopped(c->diag)) /* the search reads every name: only for a message that prints */
-		suggest_visible(c, &s, false);
-	diag_error(c->diag, e->span, "unknown name '%s'%s", name, suggest_text(&s, buf, sizeof buf));
+	unknown_name(c, e->span, name, false);
 	return TYPE_NONE;
 }
 
@@ -438,18 +487,22 @@ struct block_spec {
 	size_t nattrs;
 	const char *positional;    /* shapes of the positional arguments, as S_ codes + '0' */
 	const char *signature;     /* how the positional arguments are written, for messages */
+	const char *names[3];      /* what each positional argument is, for messages */
 };
 
-#define SPEC(what, attrs, pos, sig) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig }
-static const struct block_spec camera_spec = SPEC("camera", camera_attrs, "", NULL);
-static const struct block_spec light_spec = SPEC("light", light_attrs, "", NULL);
-static const struct block_spec material_spec = SPEC("material", material_attrs, "", NULL);
-static const struct block_spec sphere_spec = SPEC("sphere", shape_attrs, "21", "sphere { CENTER, RADIUS ... }");
-static const struct block_spec plane_spec = SPEC("plane", shape_attrs, "21", "plane { NORMAL, OFFSET ... }");
-static const struct block_spec triangle_spec = SPEC("triangle", shape_attrs, "222", "triangle { A, B, C ... }");
-static const struct block_spec mesh_spec = SPEC("mesh", mesh_attrs, "", NULL);
-static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL);
-static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL);
+#define SPEC(what, attrs, pos, sig, ...) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig, { __VA_ARGS__ } }
+static const struct block_spec camera_spec = SPEC("camera", camera_attrs, "", NULL, NULL);
+static const struct block_spec light_spec = SPEC("light", light_attrs, "", NULL, NULL);
+static const struct block_spec material_spec = SPEC("material", material_attrs, "", NULL, NULL);
+static const struct block_spec sphere_spec = SPEC("sphere", shape_attrs, "21", "sphere { CENTER, RADIUS ... }",
+                                                  "the sphere's center", "the sphere's radius");
+static const struct block_spec plane_spec = SPEC("plane", shape_attrs, "21", "plane { NORMAL, OFFSET ... }",
+                                                 "the plane's normal", "the plane's offset");
+static const struct block_spec triangle_spec = SPEC("triangle", shape_attrs, "222", "triangle { A, B, C ... }",
+                                                    "a triangle's corner", "a triangle's corner", "a triangle's corner");
+static const struct block_spec mesh_spec = SPEC("mesh", mesh_attrs, "", NULL, NULL);
+static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL, NULL);
+static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL, NULL);
 
 static const struct attr_spec *find_attr(const struct block_spec *spec, int kw)
 {
@@ -472,12 +525,13 @@ static void check_value(struct checker *c, struct ast *e, enum shape shape, cons
 		return;
 	if (t == TYPE_NUM || (t == TYPE_VEC && shape != S_NUM) || (t == TYPE_PIGMENT && shape == S_PIGMENT))
 		return;
+	const char *want = shape == S_NUM ? "a number" : shape == S_STR ? "a string" : "a vector or colour";
 	if (t == TYPE_PIGMENT)
 		diag_error(c->diag, e->span, "checker(...) can only be the value of diffuse");
+	else if (strchr(attr, ' ')) /* a phrase ("the sphere's radius"), not an attribute's name */
+		diag_error(c->diag, e->span, "%s must be %s, found %s", attr, want, type_name(t));
 	else
-		diag_error(c->diag, e->span, "'%s' takes %s, found %s", attr,
-		           shape == S_NUM ? "a number" : shape == S_STR ? "a string" : "a vector or colour",
-		           type_name(t));
+		diag_error(c->diag, e->span, "'%s' takes %s, found %s", attr, want, type_name(t));
 }
 
 /* A name argument (material, like, pattern): a lone identifier. */
@@ -509,16 +563,12 @@ static void check_material_ref(struct checker *c, struct ast *id)
 		diag_error(c->diag, id->span, "'%s' is not a material", name);
 		return;
 	}
-	struct suggestion s;
-	char buf[96];
-	suggest_init(&s, name);
-	if (!diag_stopped(c->diag)) /* the search reads every name: only for a message that prints */
-		suggest_visible(c, &s, true);
-	diag_error(c->diag, id->span, "unknown material '%s'%s", name, suggest_text(&s, buf, sizeof buf));
+	unknown_name(c, id->span, name, true);
 }
 
 static bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
                         struct span where, struct ast *seen[KW_COUNT_ALL]);
+static const char *pov_hint(const char *name, char *buf, size_t size);
 
 static void check_pattern(struct checker *c, struct ast *id)
 {
@@ -544,6 +594,9 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 	struct ast_list *args = &item->u.item.args;
 	const char *name = item_name(item);
 	struct span at = item->u.item.name_span;
+	for (size_t i = 0; i < args->n; i++)
+		if (args->v[i]->kind == AST_ERROR) /* reported where it is; its shape would be a guess */
+			return;
 
 	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL) {
 		diag_error(c->diag, item->u.item.block->open, "'%s' takes a value, not a block", name);
@@ -560,7 +613,8 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 			return;
 		}
 		if (args->n > 1) {
-			diag_error(c->diag, args->v[1]->span, "'%s' takes one value", name);
+			diag_error(c->diag, args->v[1]->span, "'%s' takes one value%s", name,
+			           args->n == 3 && a->shape != S_NUM ? "; write three numbers as a vector, <x, y, z>" : "");
 			return;
 		}
 		if (a->shape == S_STR) {
@@ -642,7 +696,7 @@ static bool check_block(struct checker *c, const struct block_spec *spec, struct
 		if (args->v[i]->kind == AST_STR)
 			diag_error(c->diag, args->v[i]->span, "%s takes a value here, not a string", spec->what);
 		else
-			check_value(c, args->v[i], spec->positional[i] - '0', spec->what);
+			check_value(c, args->v[i], spec->positional[i] - '0', spec->names[i]);
 	}
 
 	for (size_t i = 0; i < block->items.n; i++) {
@@ -650,12 +704,13 @@ static bool check_block(struct checker *c, const struct block_spec *spec, struct
 		const struct attr_spec *a = item->u.item.kw >= 0 ? find_attr(spec, item->u.item.kw) : NULL;
 		if (!a) {
 			struct suggestion s;
-			char buf[96];
+			char buf[160];
 			suggest_init(&s, item_name(item));
 			for (size_t k = 0; k < spec->nattrs; k++)
 				suggest_consider(&s, kw_name(spec->attrs[k].kw));
+			const char *hint = s.best ? suggest_text(&s, buf, sizeof buf) : pov_hint(item_name(item), buf, sizeof buf);
 			diag_error(c->diag, item->u.item.name_span, "unknown attribute '%s' in %s%s", item_name(item),
-			           spec->what, suggest_text(&s, buf, sizeof buf));
+			           spec->what, hint ? hint : "");
 			complete = false;
 			continue;
 		}
@@ -802,10 +857,12 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 		return;
 	}
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
+	c->defining = kw == KW_MATERIAL ? s->u.stmt.name : NULL;
 	bool complete = check_block(c, spec_of(kw), s->u.stmt.block, s->u.stmt.kw_span, seen);
+	c->defining = NULL;
 	check_combination(c, s, seen, complete);
 	const struct source *src = diag_source_at(c->diag, s->span.start);
-	if (kw == KW_MESH && s->u.stmt.block->args.n)
+	if (kw == KW_MESH && s->u.stmt.block->args.n && s->u.stmt.block->args.v[0]->kind == AST_STR)
 		check_readable(c, src, s->u.stmt.block->args.v[0], "mesh file");
 	if (kw == KW_SKYBOX && seen[KW_IMAGE] && seen[KW_IMAGE]->u.item.args.n == 1 &&
 	    seen[KW_IMAGE]->u.item.args.v[0]->kind == AST_STR)
@@ -871,6 +928,74 @@ static void check_include(struct checker *c, struct ast *inc)
 	free(real);
 }
 
+/* POV-Ray's words that users bring along, with what scn writes instead. */
+static const char *const pov_words[][2] = {
+	{ "light_source", "scn writes light { position P  color C }" },
+	{ "background", "scn writes skybox { color C }" },
+	{ "sky_sphere", "scn writes skybox { zenith C  horizon C } or skybox { image \"FILE\" }" },
+	{ "global_settings", "scn writes max_depth N and samples { ... } as statements" },
+	{ "max_trace_level", "scn writes max_depth N" },
+	{ "smooth_triangle", "scn writes mesh { vertices { ... } faces { ... } normals { ... } smooth }" },
+	{ "mesh2", "scn writes mesh { vertices { ... } faces { ... } }" },
+	{ "pigment", "scn writes material { diffuse C }" },
+	{ "texture", "scn writes material { diffuse C  specular S ... }" },
+	{ "finish", "scn writes material { specular S  shininess N  reflect R ... }" },
+	{ "interior", "scn writes material { transmit T  ior N }" },
+	{ "normal", "scn has no normal perturbation" },
+	{ "ambient", "scn has no ambient term; emit adds a constant colour" },
+	{ "phong", "scn's highlight is Blinn-Phong: specular and shininess" },
+	{ "roughness", "scn writes shininess, the Blinn-Phong exponent (1 / roughness)" },
+	{ "reflection", "scn writes reflect" },
+	{ "filter", "scn's transparency is transmit" },
+	{ "angle", "scn's camera writes fov, the horizontal field of view" },
+	{ "sky", "scn's camera writes up" },
+	{ "right", "scn's camera takes its aspect from resolution" },
+	{ "colour", "scn writes color" },
+	{ "object", "scn has no object statement; write the shape itself" },
+};
+
+/* Shapes POV-Ray has and scn has not. */
+static const char *const pov_shapes[] = {
+	"box", "cylinder", "cone", "torus", "disc", "blob", "lathe", "sor", "prism", "superellipsoid",
+	"height_field", "isosurface", "text", "polygon", "bicubic_patch", "union", "difference",
+	"intersection", "merge", "quadric", "poly", "cubic", "quartic", "ovus", "parametric",
+};
+
+/* "; HINT" for a name POV-Ray users write, or NULL. */
+static const char *pov_hint(const char *name, char *buf, size_t size)
+{
+	for (size_t i = 0; i < sizeof pov_words / sizeof pov_words[0]; i++)
+		if (strcmp(name, pov_words[i][0]) == 0) {
+			snprintf(buf, size, " (%s)", pov_words[i][1]);
+			return buf;
+		}
+	for (size_t i = 0; i < sizeof pov_shapes / sizeof pov_shapes[0]; i++)
+		if (strcmp(name, pov_shapes[i]) == 0) {
+			snprintf(buf, size, " (scn has spheres, planes, triangles and meshes: model it as a mesh)");
+			return buf;
+		}
+	return NULL;
+}
+
+static void unknown_statement(struct checker *c, struct ast *s)
+{
+	static const enum kw statements[] = {
+		KW_LET, KW_INCLUDE, KW_FOR, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SPHERE, KW_PLANE,
+		KW_TRIANGLE, KW_MESH, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH,
+	};
+	const char *name = s->u.item.name;
+	char buf[160];
+	const char *hint = pov_hint(name, buf, sizeof buf);
+	if (!hint) {
+		struct suggestion sg;
+		suggest_init(&sg, name);
+		for (size_t i = 0; i < sizeof statements / sizeof statements[0]; i++)
+			suggest_consider(&sg, kw_name(statements[i]));
+		hint = suggest_text(&sg, buf, sizeof buf);
+	}
+	diag_error(c->diag, s->u.item.name_span, "unknown statement '%s'%s", name, hint);
+}
+
 static void check_stmts(struct checker *c, struct ast_list *stmts)
 {
 	for (size_t i = 0; i < stmts->n && !diag_stopped(c->diag); i++) {
@@ -890,20 +1015,28 @@ static void check_stmts(struct checker *c, struct ast_list *stmts)
 		}
 		case AST_INCLUDE:
 			check_include(c, s);
+			c->include_failed |= !s->u.include.loaded;
 			break;
 		case AST_FOR:
-			check_value(c, s->u.loop.from, S_NUM, "for");
-			check_value(c, s->u.loop.to, S_NUM, "for");
+			check_value(c, s->u.loop.from, S_NUM, "the for loop's start");
+			check_value(c, s->u.loop.to, S_NUM, "the for loop's end");
 			if (c->loop_depth == LANG_MAX_NESTING) { /* includes can nest loops past one file's brackets */
 				diag_error(c->diag, s->u.loop.var_span, "for loops nested more than %d deep", LANG_MAX_NESTING);
 				break;
 			}
+			/* the loop variable has a scope of its own, around the body's: the body may
+			 * rebind its name (let i = i * 10) */
 			push_scope(c);
 			c->loop_depth++;
 			s->u.loop.b = bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
+			push_scope(c);
 			check_stmts(c, &s->u.loop.body);
+			pop_scope(c);
 			c->loop_depth--;
 			pop_scope(c);
+			break;
+		case AST_UNKNOWN_STMT:
+			unknown_statement(c, s);
 			break;
 		case AST_BLOCK_STMT:
 			check_block_stmt(c, s);
@@ -922,6 +1055,7 @@ unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, s
 	c->nbuckets = 256;
 	c->buckets = xcalloc(c->nbuckets, sizeof *c->buckets);
 	c->include_stack[0] = realpath(src->path, NULL); /* NULL for standard input */
+	c->root = stmts;
 	push_scope(c);
 	check_stmts(c, stmts);
 	if (!diag_stopped(d))

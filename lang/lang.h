@@ -16,6 +16,7 @@ struct lang_ctx {
 	const struct source *src;
 	struct ast_list stmts;        /* the result */
 	bool abort;                   /* a fatal lexical error: report nothing more */
+	bool too_deep;                /* "nested too deep" was said for this file */
 	uint32_t pos;                 /* local offset of the scanner */
 	unsigned nopen;               /* open brackets, innermost last */
 	unsigned nopen_of[3];         /* how many of them are '{', '(' and '<' */

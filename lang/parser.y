@@ -15,6 +15,7 @@ struct lang_ctx;
 }
 
 %code {
+#include <math.h>
 #include <string.h>
 
 #include "arena.h"
@@ -22,6 +23,9 @@ struct lang_ctx;
 
 int yylex(YYSTYPE *yylval, YYLTYPE *yylloc, yyscan_t scanner);
 static struct ast *bounded(struct lang_ctx *ctx, struct ast *e);
+static struct ast *string_node(struct lang_ctx *ctx, struct span sp, char *text, size_t len);
+static struct ast *not_a_vector(struct lang_ctx *ctx, struct span sp);
+static char *reserved(struct lang_ctx *ctx, struct span sp);
 static struct ast_list list1(struct lang_ctx *ctx, struct ast *e);
 static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct ast *e);
 static const struct ast_list no_list;
@@ -60,20 +64,24 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <num> NUMBER "number"
 %token <str> STRING "string"
 %token <name> IDENT "identifier"
+%token <name> NAME_VALUE "name"  /* a name followed by a value: it starts an attribute */
+%token POV_COLOUR "rgb"               /* POV-Ray's rgb, rgbf, ...: reserved for a message */
 %token <kw> ATTR "attribute name"
 %token <kw> ITEMS_KW "statement keyword"   /* camera light skybox: { ITEMS } */
 %token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle: { ARGS ITEMS } */
-%token <kw> MATERIAL "material" MESH "mesh" SAMPLES "samples" MAX_DEPTH "max_depth"
-%token <kw> LET "let" INCLUDE "include" FOR "for" IN "in"
-%token DOTDOT ".."
+%token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
+%token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
+%token DOTDOT "'..'"
 %token BAD "invalid character"   /* the lexer has reported it; the parser only recovers */
 
 %type <node> stmt expr postfix primary arg item
+%type <name> name binder
 %type <list> stmts items args opt_args call_args
 %type <block> items_block args_block mesh_block list_block
 
 /* An attribute followed by an identifier takes it as its value (`material glass`,
  * `pattern grid`) rather than ending with no value: shift, by this precedence. */
+%precedence NAME_VALUE
 %precedence NO_ARGS
 %precedence IDENT
 %left '+' '-'
@@ -90,12 +98,14 @@ stmts:
 |	stmts stmt                          { $$ = append(ctx, $1, $2); }
 ;
 stmt:
-	LET IDENT '=' expr                  { $$ = ast_let(A, @$, $2, @2, $4); }
-|	LET IDENT '=' error                 { $$ = ast_let(A, @$, $2, @2, ast_new(A, AST_ERROR, @4)); } /* still binds */
-|	INCLUDE STRING                      { $$ = ast_include(A, @$, $2.text, @2); }
+	LET binder '=' expr                 { $$ = ast_let(A, @$, $2, @2, $4); }
+|	LET binder '=' error                { $$ = ast_let(A, @$, $2, @2, ast_new(A, AST_ERROR, @4)); } /* still binds */
+|	INCLUDE STRING                      { $$ = $2.text ? ast_include(A, @$, $2.text, @2) : NULL; }
 |	FOR IDENT IN expr DOTDOT expr '{' stmts '}'
 	                                    { $$ = ast_for(A, @$, $2, @2, $4, $6, $8); }
-|	MATERIAL IDENT items_block          { $$ = ast_block_stmt(A, @$, $1, @1, $3, NULL);
+|	FOR IDENT error '{' stmts '}'       { $$ = ast_for(A, @$, $2, @2, ast_new(A, AST_ERROR, @3),
+	                                                   ast_new(A, AST_ERROR, @3), $5); } /* still binds */
+|	MATERIAL binder items_block         { $$ = ast_block_stmt(A, @$, $1, @1, $3, NULL);
 	                                      $$->u.stmt.name = $2; $$->u.stmt.name_span = @2; }
 |	ITEMS_KW items_block                { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
 |	ARGS_KW args_block                  { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
@@ -103,6 +113,8 @@ stmt:
 |	SAMPLES items_block                 { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
 |	SAMPLES expr                        { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
 |	MAX_DEPTH expr                      { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
+|	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); $$->kind = AST_UNKNOWN_STMT; }
+|	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	error                               { $$ = NULL; }
 ;
 
@@ -117,7 +129,7 @@ args_block:
 ;
 mesh_block:
 	items_block
-|	'{' STRING items '}'                { $$ = ast_block(A, @1, list1(ctx, ast_str(A, @2, $2.text, $2.len)), $3); }
+|	'{' STRING items '}'                { $$ = ast_block(A, @1, list1(ctx, string_node(ctx, @2, $2.text, $2.len)), $3); }
 ;
 list_block:
 	'{' args '}'                        { $$ = ast_block(A, @1, $2, no_list); }
@@ -133,8 +145,41 @@ item:
 |	ATTR list_block                     { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 |	MATERIAL opt_args                   { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
-|	IDENT opt_args                      { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); }
-|	IDENT list_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, $2); } /* misspelt 'vertices' */
+|	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); }
+|	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); } /* pigment { ... } */
+;
+name:
+	IDENT
+|	NAME_VALUE
+;
+/* The name a let or a material binds. A keyword there is reported, and bound all the
+ * same, so that the statement is not lost and the ones after it are read as written. */
+binder:
+	IDENT
+|	ATTR                                { $$ = reserved(ctx, @1); }
+|	ITEMS_KW                            { $$ = reserved(ctx, @1); }
+|	ARGS_KW                             { $$ = reserved(ctx, @1); }
+|	MATERIAL                            { $$ = reserved(ctx, @1); }
+|	MESH                                { $$ = reserved(ctx, @1); }
+|	SAMPLES                             { $$ = reserved(ctx, @1); }
+|	MAX_DEPTH                           { $$ = reserved(ctx, @1); }
+;
+
+/* What an unknown name's braces hold is skipped whole, so that one message names the
+ * unknown word (pigment, texture, light_source, a misspelt keyword) and nothing inside
+ * it is reported. */
+soup_block:
+	'{' soup '}'
+;
+soup:
+	%empty
+|	soup soup_token
+|	soup '{' soup '}'
+;
+soup_token:
+	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {}
+|	MATERIAL {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
+|	DOTDOT | BAD | POV_COLOUR | '(' | ')' | '<' | '>' | ',' | '.' | '=' | '+' | '-' | '*' | '/'
 ;
 opt_args:
 	%empty %prec NO_ARGS                { $$ = no_list; }
@@ -146,7 +191,7 @@ args:
 ;
 arg:
 	expr
-|	STRING                              { $$ = ast_str(A, @$, $1.text, $1.len); }
+|	STRING                              { $$ = string_node(ctx, @$, $1.text, $1.len); }
 ;
 
 expr:
@@ -159,15 +204,19 @@ expr:
 ;
 postfix:
 	primary
-|	postfix '.' IDENT                   { $$ = bounded(ctx, ast_member(A, @$, $1, $3, @3)); }
+|	postfix '.' name                    { $$ = bounded(ctx, ast_member(A, @$, $1, $3, @3)); }
 ;
 primary:
-	NUMBER                              { $$ = ast_num(A, @$, $1); }
-|	IDENT                               { $$ = ast_ident(A, @$, $1); }
+	NUMBER                              { $$ = isnan($1) ? ast_new(A, AST_ERROR, @$) : ast_num(A, @$, $1); }
+|	name                                { $$ = ast_ident(A, @$, $1); }
 |	IDENT '(' ')'                       { $$ = ast_call(A, @$, $1, @1, no_list); }
 |	IDENT '(' call_args ')'             { $$ = bounded(ctx, ast_call(A, @$, $1, @1, $3)); }
 |	'(' expr ')'                        { $$ = $2; }
 |	'<' expr ',' expr ',' expr '>'      { $$ = bounded(ctx, ast_vec(A, @$, $2, $4, $6)); }
+|	'<' expr ',' expr '>'               { $$ = not_a_vector(ctx, @$); }
+|	'<' expr '>'                        { $$ = not_a_vector(ctx, @$); }
+|	POV_COLOUR primary                  { $$ = $2; diag_error(ctx->diag, @1, "'%.*s' is POV-Ray's; an scn colour is a plain vector, like <1, 0.5, 0>",
+	                                      (int)(@1.end - @1.start), ctx->src->text + (@1.start - ctx->src->base)); }
 ;
 call_args:
 	expr                                { $$ = list1(ctx, $1); }
@@ -175,6 +224,25 @@ call_args:
 ;
 
 %%
+
+/* A string token's node; a string with a bad escape (text NULL) was reported already. */
+static struct ast *string_node(struct lang_ctx *ctx, struct span sp, char *text, size_t len)
+{
+	return text ? ast_str(ctx->arena, sp, text, len) : ast_new(ctx->arena, AST_ERROR, sp);
+}
+
+static char *reserved(struct lang_ctx *ctx, struct span sp)
+{
+	char *word = arena_strndup(ctx->arena, ctx->src->text + (sp.start - ctx->src->base), sp.end - sp.start);
+	diag_error(ctx->diag, sp, "'%s' is a reserved word; it cannot be a name", word);
+	return word;
+}
+
+static struct ast *not_a_vector(struct lang_ctx *ctx, struct span sp)
+{
+	diag_error(ctx->diag, sp, "a vector has three components: <x, y, z>");
+	return ast_new(ctx->arena, AST_ERROR, sp);
+}
 
 static struct ast_list list1(struct lang_ctx *ctx, struct ast *e)
 {
@@ -195,7 +263,9 @@ static struct ast *bounded(struct lang_ctx *ctx, struct ast *e)
 {
 	if (e->depth <= LANG_MAX_NESTING)
 		return e;
-	diag_error(ctx->diag, e->span, "expression nested more than %d deep", LANG_MAX_NESTING);
+	if (!ctx->too_deep) /* once: the expressions around this one would say it again */
+		diag_error(ctx->diag, e->span, "expression nested more than %d deep", LANG_MAX_NESTING);
+	ctx->too_deep = true;
 	return ast_new(ctx->arena, AST_ERROR, e->span);
 }
 
@@ -207,8 +277,10 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 	switch (k) {
 	case YYSYMBOL_NUMBER: return value ? "a value" : "a number";
 	case YYSYMBOL_ATTR: return "an attribute";
-	case YYSYMBOL_IDENT: return value || attribute ? NULL : "a name";
+	case YYSYMBOL_IDENT: case YYSYMBOL_NAME_VALUE: return value || attribute ? NULL : "a name";
 	case YYSYMBOL_MATERIAL: return attribute ? NULL : "'material'";
+	case YYSYMBOL_STRING: return value ? NULL : "a string"; /* a string where a value may stand is rare */
+	case YYSYMBOL_POV_COLOUR: case YYSYMBOL_BAD: return NULL;
 	default: break;
 	}
 	const char *name = yysymbol_name(k);
@@ -238,26 +310,34 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 	} else {
 		const char *text = ctx->src->text + (at.start - ctx->src->base);
 		int len = (int)(at.end - at.start);
-		const char *kind = got == YYSYMBOL_NUMBER ? "number " : got == YYSYMBOL_IDENT ? "name "
-		                 : got == YYSYMBOL_STRING ? "string " : "";
+		const char *kind = got == YYSYMBOL_NUMBER ? "number " : got == YYSYMBOL_IDENT || got == YYSYMBOL_NAME_VALUE
+		                 ? "name " : got == YYSYMBOL_STRING ? "string " : "";
 		snprintf(what, sizeof what, "%s'%.*s%s'", kind, len > 40 ? 40 : len, text, len > 40 ? "..." : "");
 	}
 
-	bool statement = false, value = false, attribute = false;
+	bool statement = false, value = false, attribute = false, name = false;
 	for (int i = 0; i < n; i++) {
 		statement |= expected[i] == YYSYMBOL_LET;
 		value |= expected[i] == YYSYMBOL_NUMBER;
 		attribute |= expected[i] == YYSYMBOL_ATTR;
+		name |= expected[i] == YYSYMBOL_IDENT;
+	}
+	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_MATERIAL
+	            || got == YYSYMBOL_MESH || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH || got == YYSYMBOL_LET
+	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN;
+	if (keyword && name && !value && !attribute) { /* let count = 3: a new name was wanted */
+		diag_error(ctx->diag, at, "%s is a reserved word; it cannot be a name", what);
+		return 0;
 	}
 	const char *names[YYNTOKENS];
 	int m = 0;
 	for (int i = 0; i < n; i++) {
-		const char *name = expected_name(expected[i], value, attribute);
+		const char *listed = expected_name(expected[i], value, attribute);
 		bool dup = false;
-		for (int j = 0; j < m && name; j++)
-			dup |= strcmp(names[j], name) == 0;
-		if (name && !dup)
-			names[m++] = name;
+		for (int j = 0; j < m && listed; j++)
+			dup |= strcmp(names[j], listed) == 0;
+		if (listed && !dup)
+			names[m++] = listed;
 	}
 	char list[512] = "";
 	if (statement) {

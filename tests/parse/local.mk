@@ -73,5 +73,7 @@ TESTS += tests/parse/whitespace.scn
 EXTRA_DIST += tests/parse/whitespace.scn tests/parse/whitespace.dump
 # files that the tests read: included scenes, a mesh, a skybox image
 EXTRA_DIST += tests/parse/inc/defs.scn tests/parse/inc/sub/deeper.scn tests/parse/inc/leaf.scn
-EXTRA_DIST += tests/parse/inc/ring_item.scn tests/parse/inc/marker.scn tests/parse/inc/library.scn
+EXTRA_DIST += tests/parse/inc/ring_item.scn tests/parse/inc/marker.scn tests/parse/inc/library.scn tests/parse/inc/flat.scn
 EXTRA_DIST += tests/parse/inc/tri.obj tests/parse/tetra.obj tests/parse/sky.png
+TESTS += tests/parse/lexing.scn
+EXTRA_DIST += tests/parse/lexing.scn tests/parse/lexing.dump tests/parse/lexing.err
