@@ -85,6 +85,13 @@ static uint32_t new_node(struct bvh *b, struct box box)
 	return (uint32_t)b->nnodes++;
 }
 
+/* The bin of a centroid coordinate c, for bins of width 1/scale from lo. */
+static int bin_of(double c, double lo, double scale, int nbins)
+{
+	int k = (int)((c - lo) * scale);
+	return k < 0 ? 0 : k >= nbins ? nbins - 1 : k;
+}
+
 /* Finds the cheapest binned SAH split of refs[0, n) whose centroids span cbox.
  * Returns the axis and the bin boundary (split before bin *split), or -1 when keeping
  * a leaf is cheaper. */
@@ -102,8 +109,7 @@ static int find_split(const struct build_ref *refs, size_t n, struct box cbox, d
 			bins[i] = box_empty();
 		double scale = NBINS / extent;
 		for (size_t i = 0; i < n; i++) {
-			int k = (int)((vget(refs[i].centroid, axis) - lo) * scale);
-			k = k < 0 ? 0 : k >= NBINS ? NBINS - 1 : k;
+			int k = bin_of(vget(refs[i].centroid, axis), lo, scale, NBINS);
 			counts[k]++;
 			bins[k] = box_union(bins[k], refs[i].box);
 		}
@@ -137,6 +143,23 @@ static int find_split(const struct build_ref *refs, size_t n, struct box cbox, d
 	return best_axis;
 }
 
+/* Puts the references whose centroid falls in a bin before 'split' (of nbins) first;
+ * returns how many there are. The binning arithmetic is the same as find_split's. */
+static size_t partition(struct build_ref *refs, size_t n, int axis, double lo, double scale, int nbins, int split)
+{
+	size_t i = 0, j = n;
+	while (i < j) {
+		if (bin_of(vget(refs[i].centroid, axis), lo, scale, nbins) < split) {
+			i++;
+		} else {
+			struct build_ref tmp = refs[i];
+			refs[i] = refs[--j];
+			refs[j] = tmp;
+		}
+	}
+	return i;
+}
+
 static uint32_t build(struct bvh *b, struct build_ref *refs, size_t n, size_t first, int depth, bool brute)
 {
 	struct box box = box_empty(), cbox = box_empty();
@@ -153,38 +176,15 @@ static uint32_t build(struct bvh *b, struct build_ref *refs, size_t n, size_t fi
 		axis = find_split(refs, n, cbox, box_area(box), &split);
 	size_t mid = 0;
 	if (axis >= 0) {
-		double lo = vget(cbox.lo, axis), scale = NBINS / (vget(cbox.hi, axis) - lo);
-		size_t i = 0, j = n;
-		while (i < j) { /* partition by bin, with the same arithmetic as the binning */
-			int k = (int)((vget(refs[i].centroid, axis) - lo) * scale);
-			k = k < 0 ? 0 : k >= NBINS ? NBINS - 1 : k;
-			if (k < split) {
-				i++;
-			} else {
-				struct build_ref tmp = refs[i];
-				refs[i] = refs[--j];
-				refs[j] = tmp;
-			}
-		}
-		mid = i;
+		mid = partition(refs, n, axis, vget(cbox.lo, axis), NBINS / (vget(cbox.hi, axis) - vget(cbox.lo, axis)),
+		                NBINS, split);
 	} else if (!brute && n > MAX_LEAF && depth < MAX_DEPTH) {
-		/* a leaf would be cheaper by SAH but is too big: split at the median of the widest axis */
+		/* a leaf would be cheaper by SAH but is too big: split the widest axis in two
+		 * halves, which is binning with two bins */
 		struct vec3 e = vsub(cbox.hi, cbox.lo);
 		axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
-		if (vget(e, axis) > 0) {
-			double pivot = (vget(cbox.lo, axis) + vget(cbox.hi, axis)) / 2;
-			size_t i = 0, j = n;
-			while (i < j) {
-				if (vget(refs[i].centroid, axis) < pivot) {
-					i++;
-				} else {
-					struct build_ref tmp = refs[i];
-					refs[i] = refs[--j];
-					refs[j] = tmp;
-				}
-			}
-			mid = i;
-		}
+		if (vget(e, axis) > 0)
+			mid = partition(refs, n, axis, vget(cbox.lo, axis), 2 / vget(e, axis), 2, 1);
 	}
 	if (mid == 0 || mid == n) {
 		/* a leaf: its primitives go to prims[first, first + n) */

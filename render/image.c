@@ -2,6 +2,7 @@
  * choosing the format, atomic replacement on write, sniffing the format on read. */
 #include "image.h"
 
+
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -11,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "atomic.h"
 #include "xalloc.h"
 
 struct image *image_new(int width, int height)
@@ -124,28 +126,6 @@ int image_write_all(int fd, const void *buf, size_t n)
 	return 0;
 }
 
-/* Opens a new, empty temporary file in the directory of path; its name goes to *tmp
- * (freed by the caller). Returns the descriptor, or -1 with errno set. The name is
- * short and fixed apart from the counter, so that a long final name cannot make it
- * too long, and O_EXCL keeps two writers (or a stale file) apart. The mode 0666 lets
- * the umask decide the permissions, as for any file the user creates. */
-static int open_temp(const char *path, char **tmp)
-{
-	static unsigned counter;       /* images are written from one thread */
-	const char *slash = strrchr(path, '/');
-	int dirlen = slash ? (int)(slash - path + 1) : 0;
-	size_t size = (size_t)dirlen + 64;
-	*tmp = xmalloc(size);
-	for (int attempt = 0; attempt < 100; attempt++) {
-		snprintf(*tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
-		int fd = open(*tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-		if (fd >= 0 || errno != EEXIST)
-			return fd;
-	}
-	errno = EEXIST;
-	return -1;
-}
-
 int image_write(const struct image *img, const char *path, const struct image_write_options *opt,
                 char *err, size_t errlen)
 {
@@ -168,11 +148,10 @@ int image_write(const struct image *img, const char *path, const struct image_wr
 	if (errlen)
 		err[0] = '\0';
 	char *tmp;
-	int fd = open_temp(path, &tmp);
+	int fd = atomic_open(path, &tmp);
 	if (fd < 0) {
 		int e = errno;
 		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
-		free(tmp);
 		return e;
 	}
 	int rc;
@@ -182,24 +161,7 @@ int image_write(const struct image *img, const char *path, const struct image_wr
 	case IMAGE_PPM: rc = image_ppm_write(img, fd, path, o.bit_depth, err, errlen); break;
 	default: rc = EINVAL; break;
 	}
-	/* fsync before rename: otherwise a crash soon after could leave the new name
-	 * pointing at an empty file, the very thing the rename is there to prevent. close
-	 * is checked too, since some file systems report write errors only there. */
-	if (rc == 0 && fsync(fd) != 0 && errno != EINVAL)
-		rc = errno;
-	if (close(fd) != 0 && rc == 0)
-		rc = errno;
-	if (rc == 0 && rename(tmp, path) != 0)
-		rc = errno;
-	if (rc != 0) {
-		/* the writers have already said what went wrong; fsync, close and rename
-		 * failures have not */
-		if (errlen && !err[0])
-			snprintf(err, errlen, "cannot write '%s': %s", path, strerror(rc));
-		unlink(tmp);
-	}
-	free(tmp);
-	return rc;
+	return atomic_finish(fd, tmp, path, rc, err, errlen);
 }
 
 int image_read(const char *path, struct image **out, char *err, size_t errlen)

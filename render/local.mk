@@ -16,3 +16,4 @@ render_libscnrender_a_SOURCES += %D%/image.c %D%/image.h %D%/png.c %D%/exr.c %D%
 render_libscnrender_a_SOURCES += render/sampler.c render/sampler.h
 render_libscnrender_a_SOURCES += render/imgdiff.c render/imgdiff.h
 render_libscnrender_a_SOURCES += %D%/pov_export.c %D%/pov_export.h
+render_libscnrender_a_SOURCES += %D%/atomic.c %D%/atomic.h

@@ -6,6 +6,7 @@
  * povray command line that renders it and whatever POV-Ray cannot reproduce exactly. */
 #include "pov_export.h"
 
+
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -19,6 +20,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "atomic.h"
 #include "xalloc.h"
 
 /* A colour channel this small stands in for zero where a layer must not filter to
@@ -1103,48 +1105,30 @@ int pov_export(const struct scene *sc, const struct pov_export_options *opt, FIL
 int pov_export_file(const struct scene *sc, const struct pov_export_options *opt, const char *path, char *err,
                     size_t errlen)
 {
-	static unsigned counter;
-	const char *slash = strrchr(path, '/');
-	int dirlen = slash ? (int)(slash - path + 1) : 0;
-	size_t size = (size_t)dirlen + 64;
-	char *tmp = xmalloc(size);
-	int fd = -1;
-	for (int attempt = 0; attempt < 100 && fd < 0; attempt++) {
-		snprintf(tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
-		fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-		if (fd < 0 && errno != EEXIST)
-			break;
-	}
+	if (errlen)
+		err[0] = '\0';
+	char *tmp;
+	int fd = atomic_open(path, &tmp);
 	if (fd < 0) {
 		int e = errno;
 		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
-		free(tmp);
 		return e;
 	}
-	FILE *f = fdopen(fd, "w");
+	/* a stream on a second descriptor: fclose flushes and closes it, and atomic_finish
+	 * syncs and closes the first */
+	int dup_fd = dup(fd);
+	FILE *f = dup_fd >= 0 ? fdopen(dup_fd, "w") : NULL;
 	if (!f) {
 		int e = errno;
-		close(fd);
-		unlink(tmp);
-		free(tmp);
-		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
-		return e;
+		if (dup_fd >= 0)
+			close(dup_fd);
+		return atomic_finish(fd, tmp, path, e, err, errlen);
 	}
 	char *what = xmalloc(strlen(path) + 3);
 	sprintf(what, "'%s'", path);
 	int rc = export_to(sc, opt, f, what, err, errlen);
 	free(what);
-	if (rc == 0 && fsync(fd) != 0 && errno != EINVAL)
-		rc = errno;
 	if (fclose(f) != 0 && rc == 0)
 		rc = errno ? errno : EIO;
-	if (rc == 0 && rename(tmp, path) != 0)
-		rc = errno;
-	if (rc != 0) {
-		if (errlen && !err[0])
-			snprintf(err, errlen, "cannot write '%s': %s", path, strerror(rc));
-		unlink(tmp);
-	}
-	free(tmp);
-	return rc;
+	return atomic_finish(fd, tmp, path, rc, err, errlen);
 }

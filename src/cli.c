@@ -5,6 +5,9 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "xalloc.h"
 
 int cli_usage_error(const struct command *cmd, const char *fmt, ...)
 {
@@ -39,4 +42,17 @@ bool cli_int(const char *s, long lo, long hi, long *out)
 		return false;
 	*out = v;
 	return true;
+}
+
+char *cli_default_output(const char *scene, const char *ext)
+{
+	const char *base = strrchr(scene, '/');
+	base = strcmp(scene, "-") == 0 ? "stdin" : base ? base + 1 : scene;
+	const char *dot = strrchr(base, '.');
+	size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+	size_t e = strlen(ext);
+	char *out = xmalloc(n + e + 1);
+	memcpy(out, base, n);
+	memcpy(out + n, ext, e + 1);
+	return out;
 }

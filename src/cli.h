@@ -20,6 +20,9 @@ int cli_usage_error(const struct command *cmd, const char *fmt, ...) __attribute
 int cli_help(const struct command *cmd);
 /* The value of option argv[*i] (the next argument), advancing *i; NULL when missing. */
 const char *cli_value(int argc, char **argv, int *i);
+/* The name of a scene's output in the current directory: its name with ext (".png"),
+ * "stdin" + ext for standard input; malloc'd. */
+char *cli_default_output(const char *scene, const char *ext);
 /* A whole number in [lo, hi] spelt exactly by s. */
 bool cli_int(const char *s, long lo, long hi, long *out);
 

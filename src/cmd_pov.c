@@ -14,21 +14,6 @@
 #include "scene_desc.h"
 #include "xalloc.h"
 
-/* The default output: the scene's name with .pov, in the current directory. */
-static char *default_output(const char *scene)
-{
-	if (strcmp(scene, "-") == 0)
-		return xstrdup("stdin.pov");
-	const char *base = strrchr(scene, '/');
-	base = base ? base + 1 : scene;
-	const char *dot = strrchr(base, '.');
-	size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-	char *out = xmalloc(n + 5);
-	memcpy(out, base, n);
-	memcpy(out + n, ".pov", 5);
-	return out;
-}
-
 int cmd_pov(const struct command *self, int argc, char **argv)
 {
 	const char *scene = NULL, *out_arg = NULL;
@@ -50,7 +35,7 @@ int cmd_pov(const struct command *self, int argc, char **argv)
 	if (!scene)
 		return cli_usage_error(self, "no scene given");
 	bool to_stdout = out_arg && strcmp(out_arg, "-") == 0;
-	char *out = to_stdout || !out_arg ? default_output(scene) : xstrdup(out_arg);
+	char *out = to_stdout || !out_arg ? cli_default_output(scene, ".pov") : xstrdup(out_arg);
 
 	struct diag d;
 	diag_init(&d, stderr);

@@ -101,21 +101,6 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 	return 0;
 }
 
-/* The output's default name: the scene's, with .png. */
-static char *default_output(const char *scene)
-{
-	if (strcmp(scene, "-") == 0)
-		return xstrdup("stdin.png");
-	const char *base = strrchr(scene, '/');
-	base = base ? base + 1 : scene;
-	const char *dot = strrchr(base, '.');
-	size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-	char *out = xmalloc(n + 5);
-	memcpy(out, base, n);
-	memcpy(out + n, ".png", 5);
-	return out;
-}
-
 /* Applies the command line's overrides to the scene; a combination the language would
  * reject is a usage error. */
 static int override(const struct command *self, const struct render_args *a, struct scene_desc *s)
@@ -172,7 +157,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	int rc = parse_args(self, argc, argv, &a);
 	if (rc)
 		return rc < 0 ? 0 : rc;
-	char *out = a.out ? xstrdup(a.out) : default_output(a.scene);
+	char *out = a.out ? xstrdup(a.out) : cli_default_output(a.scene, ".png");
 	if (image_format_of(out) < 0) {
 		rc = cli_usage_error(self, "cannot tell the format of '%s' (use .png, .exr or .ppm)", out);
 		free(out);

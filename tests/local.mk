@@ -14,6 +14,6 @@ include tests/errors/local.mk
 include tests/parse/local.mk
 include tests/cli/local.mk
 include tests/hostile/local.mk
-EXTRA_DIST += tests/unit/check.h
+EXTRA_DIST += tests/unit/check.h tests/unit/random.h
 include tests/unit/local.mk
 include tests/render/local.mk

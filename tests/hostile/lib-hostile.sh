@@ -14,6 +14,10 @@ sanitized=${SCN_SANITIZED:-}
 if [ -z "$sanitized" ] && nm "$SCN" 2>/dev/null | grep -q '__asan_init\|__ubsan_handle'; then
 	sanitized=1
 fi
+# without nm: a sanitizer build does not even start under the address-space cap
+if [ -z "$sanitized" ] && ! sh -c 'ulimit -v "$1" && "$2" --version' sh "$vmem" "$SCN" >/dev/null 2>&1; then
+	sanitized=1
+fi
 if [ -n "$sanitized" ] && [ "$sanitized" != 0 ]; then
 	vmem=unlimited
 	slow=${SCN_HOSTILE_SLOW:-6}

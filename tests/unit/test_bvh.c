@@ -36,36 +36,10 @@
 #include "shape.h"
 #include "xalloc.h"
 
+#include "random.h"
+
 #define NEAR_ULPS 4
 #define PI 3.14159265358979323846
-
-/* ---- random numbers: splitmix64 ---- */
-
-static uint64_t rng_state = 0x5eed;
-
-static uint64_t next_u64(void)
-{
-	uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-	return z ^ (z >> 31);
-}
-
-static double urand(void) { return (double)(next_u64() >> 11) * 0x1p-53; }
-static double urange(double a, double b) { return a + (b - a) * urand(); }
-static int irand(int n) { return (int)(next_u64() % (uint64_t)n); }
-/* log-uniform in [a, b] */
-static double lrand(double a, double b) { return a * pow(b / a, urand()); }
-
-static struct vec3 rand_unit(void)
-{
-	for (;;) {
-		struct vec3 v = v3(urange(-1, 1), urange(-1, 1), urange(-1, 1));
-		double l = vdot(v, v);
-		if (l > 1e-4 && l <= 1)
-			return vscale(v, 1 / sqrt(l));
-	}
-}
 
 static struct vec3 rand_in_box(struct vec3 lo, struct vec3 hi)
 {
@@ -723,6 +697,7 @@ static void test_deep(void)
 
 int main(void)
 {
+	rng_seed(0x5eed);
 	test_signed_zero_on_face();
 	test_random_scenes();
 	test_same_centroid();

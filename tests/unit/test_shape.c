@@ -20,34 +20,9 @@
 #include "shape.h"
 #include "xalloc.h"
 
+#include "random.h"
+
 #define PI 3.14159265358979323846
-
-/* ---- random numbers: splitmix64 ---- */
-
-static uint64_t rng_state = 0x54a9e;
-
-static uint64_t next_u64(void)
-{
-	uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-	return z ^ (z >> 31);
-}
-
-static double urand(void) { return (double)(next_u64() >> 11) * 0x1p-53; }
-static double urange(double a, double b) { return a + (b - a) * urand(); }
-static int irand(int n) { return (int)(next_u64() % (uint64_t)n); }
-static double lrand(double a, double b) { return a * pow(b / a, urand()); }
-
-static struct vec3 rand_unit(void)
-{
-	for (;;) {
-		struct vec3 v = v3(urange(-1, 1), urange(-1, 1), urange(-1, 1));
-		double l = vdot(v, v);
-		if (l > 1e-4 && l <= 1)
-			return vscale(v, 1 / sqrt(l));
-	}
-}
 
 /* A unit vector perpendicular to u. */
 static struct vec3 perp_unit(struct vec3 u)
@@ -737,6 +712,7 @@ static void test_plane_parallel(void)
 
 int main(void)
 {
+	rng_seed(0x54a9e);
 	test_grid();
 	test_fans();
 	test_small_far_spheres();

@@ -1,0 +1,58 @@
+/* atomic.c: the temporary-file-and-rename protocol shared by the image and POV-Ray
+ * writers: an interrupted or failed write never leaves a truncated file or destroys the
+ * one that was there. */
+#include "atomic.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "xalloc.h"
+
+/* The name is short and fixed apart from the counter, so that a long final name cannot
+ * make it too long, and O_EXCL keeps two writers (or a stale file) apart. The mode 0666
+ * lets the umask decide the permissions, as for any file the user creates. */
+int atomic_open(const char *path, char **tmp)
+{
+	static unsigned counter;       /* files are written from one thread */
+	const char *slash = strrchr(path, '/');
+	int dirlen = slash ? (int)(slash - path + 1) : 0;
+	size_t size = (size_t)dirlen + 64;
+	*tmp = xmalloc(size);
+	for (int attempt = 0; attempt < 100; attempt++) {
+		snprintf(*tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
+		int fd = open(*tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+		if (fd >= 0)
+			return fd;
+		if (errno != EEXIST)
+			break;
+	}
+	int e = errno;
+	free(*tmp);
+	*tmp = NULL;
+	errno = e;
+	return -1;
+}
+
+int atomic_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t errlen)
+{
+	/* fsync before rename: otherwise a crash soon after could leave the new name
+	 * pointing at an empty file, the very thing the rename is there to prevent. close
+	 * is checked too, since some file systems report write errors only there. */
+	if (rc == 0 && fsync(fd) != 0 && errno != EINVAL)
+		rc = errno;
+	if (close(fd) != 0 && rc == 0)
+		rc = errno;
+	if (rc == 0 && rename(tmp, path) != 0)
+		rc = errno;
+	if (rc != 0) {
+		if (errlen && !err[0])
+			snprintf(err, errlen, "cannot write '%s': %s", path, strerror(rc));
+		unlink(tmp);
+	}
+	free(tmp);
+	return rc;
+}

@@ -1,0 +1,18 @@
+/* atomic.h: output files written whole or not at all: a temporary file beside the
+ * target, flushed to disk and renamed over it (LANGUAGE.md section 8). */
+#ifndef SCN_ATOMIC_H
+#define SCN_ATOMIC_H
+
+#include <stddef.h>
+
+/* Opens a new, empty temporary file in the directory of path; its name goes to *tmp.
+ * Returns the descriptor, or -1 with errno set (*tmp is then freed and NULL). */
+int atomic_open(const char *path, char **tmp);
+
+/* Ends what atomic_open began. When rc is 0, flushes fd to disk, closes it and renames
+ * tmp over path; otherwise, or when a step fails, closes fd and removes tmp, leaving
+ * path untouched. Returns the first error (rc itself when it was not 0), 0 on success;
+ * err gets "cannot write 'path': reason" unless it already holds a message. Frees tmp. */
+int atomic_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t errlen);
+
+#endif
