@@ -177,7 +177,14 @@ static void push_scope(struct checker *c)
  * in text that recovery skipped. */
 static void pop_scope(struct checker *c)
 {
-	for (struct binding *b = c->scope_bindings[c->scope]; b; b = b->scope_next) {
+	/* the list is newest first: reversed, the warnings come in the order of the file */
+	struct binding *oldest = NULL;
+	for (struct binding *b = c->scope_bindings[c->scope], *next; b; b = next) {
+		next = b->scope_next;
+		b->scope_next = oldest;
+		oldest = b;
+	}
+	for (struct binding *b = oldest; b; b = b->scope_next) {
 		/* nor for what an included file defines: a library need not use all it offers */
 		if (!b->used && b->kind != BIND_LOOP && c->diag->errors == 0 && !diag_source_at(c->diag, b->span.start)->included)
 			diag_warning(c->diag, b->span, b->kind == BIND_MATERIAL ? "material '%s' is never used"

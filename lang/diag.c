@@ -12,6 +12,9 @@
 
 #include "xalloc.h"
 
+/* Warnings shown at the most; the rest are counted. */
+enum { MAX_WARNINGS = 100 };
+
 /* Lines longer than this are shown as a window around the span. */
 enum { LINE_WINDOW = 160, WINDOW_LEAD = 60 };
 
@@ -171,9 +174,10 @@ static void quote_line(struct diag *d, struct source *s, uint32_t start, uint32_
 		if (end > we)
 			end = we > start ? we : start + 1;
 	}
-	fprintf(d->out, "%5u | %s", line, ws > ls ? "..." : "");
+	int width = line > 99999 ? snprintf(NULL, 0, "%u", line) : 5; /* the gutter grows past 5 digits */
+	fprintf(d->out, "%*u | %s", width, line, ws > ls ? "..." : "");
 	put_source_text(d->out, s->text, ws, we);
-	fprintf(d->out, "%s\n      | %s", we < le ? "..." : "", ws > ls ? "   " : "");
+	fprintf(d->out, "%s\n%*s | %s", we < le ? "..." : "", width, "", ws > ls ? "   " : "");
 	put_padding(d->out, s->text, ws, start);
 	fputc('^', d->out);
 	for (uint32_t i = start + 1; i < end; i++)
@@ -195,10 +199,12 @@ static bool admit(struct diag *d, enum diag_level level)
 		d->stopped = d->dropped = true;
 		return false;
 	}
-	if (level == DIAG_ERROR)
+	if (level == DIAG_ERROR) {
 		d->errors++;
-	else
-		d->warnings++;
+	} else if (++d->warnings > MAX_WARNINGS) { /* 100k unused names need not say so 100k times */
+		d->dropped = true;
+		return false;
+	}
 	return true;
 }
 
@@ -277,6 +283,10 @@ void diag_flush(struct diag *d)
 		free(d->records[i].key);
 	}
 	d->nrecords = 0;
+	if (d->warnings > MAX_WARNINGS && !d->warnings_told) {
+		fprintf(d->out, "scn: %d more warnings not shown\n", d->warnings - MAX_WARNINGS);
+		d->warnings_told = true;
+	}
 	if (d->stopped && !d->stop_told) {
 		fprintf(d->out, "scn: too many errors (more than %d), stopping\n", d->max_errors);
 		d->stop_told = true;

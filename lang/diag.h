@@ -46,6 +46,7 @@ struct diag {
 	bool stopped;
 	bool dropped;        /* the last error or warning was not printed, nor are its notes */
 	bool stop_told;      /* the "too many errors" line was printed */
+	bool warnings_told;  /* the count of warnings not shown was printed */
 };
 
 /* Total bytes of source the offset space (all files, includes counted each time) may hold. */

@@ -18,6 +18,8 @@ struct evaluator {
 	struct value *slots;       /* current value of each binding; a material's is its index */
 	bool *bad;                 /* the binding's value could not be computed */
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
+	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
+	bool exhausted;            /* a limit on the whole evaluation was reached: stop */
 	unsigned nloops;
 	struct { const struct ast *loop; double i; } loops[LANG_MAX_NESTING];
 };
@@ -118,6 +120,13 @@ static bool eval_binary(struct evaluator *ev, struct ast *e, struct value *out)
 static bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 {
 	memset(out, 0, sizeof *out);
+	if (++ev->steps > LANG_MAX_STEPS) {
+		if (!ev->exhausted)
+			eval_error(ev, e, "the scene takes more than %d evaluation steps (its loops do too much work)",
+			           LANG_MAX_STEPS);
+		ev->exhausted = true;
+		return false;
+	}
 	switch (e->kind) {
 	case AST_NUM:
 		out->v[0] = e->u.num;
@@ -448,9 +457,14 @@ static bool apply_transform(struct evaluator *ev, struct ast *it, struct xform *
 	}
 }
 
-static void push_object(struct evaluator *ev, struct object_desc *obj)
+static void push_object(struct evaluator *ev, struct ast *at, struct object_desc *obj)
 {
 	struct scene_desc *o = ev->out;
+	if (o->nobjects == LANG_MAX_OBJECTS) {
+		eval_error(ev, at, "the scene makes more than %d objects", LANG_MAX_OBJECTS);
+		ev->exhausted = true;
+		return;
+	}
 	xgrow((void **)&o->objects, &o->cap_objects, o->nobjects + 1, sizeof *o->objects);
 	o->objects[o->nobjects++] = *obj;
 }
@@ -602,7 +616,7 @@ static void eval_object(struct evaluator *ev, struct ast *s, const struct source
 		if (is_zero(n))
 			diag_warning(ev->diag, s->u.stmt.kw_span, "this triangle has no area (its corners lie on a line); it is not drawn");
 	}
-	push_object(ev, &obj);
+	push_object(ev, s, &obj);
 }
 
 static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source *src)
@@ -698,7 +712,7 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 	unsigned slot = s->u.loop.b->slot;
 	ev->loops[ev->nloops].loop = s;
 	ev->nloops++;
-	for (double i = from; i < to && !diag_stopped(ev->diag); i++) {
+	for (double i = from; i < to && !diag_stopped(ev->diag) && !ev->exhausted; i++) {
 		ev->loops[ev->nloops - 1].i = i;
 		ev->slots[slot].v[0] = i;
 		eval_stmts(ev, &s->u.loop.body);
@@ -708,7 +722,7 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 
 static void eval_stmts(struct evaluator *ev, struct ast_list *stmts)
 {
-	for (size_t i = 0; i < stmts->n && !diag_stopped(ev->diag); i++) {
+	for (size_t i = 0; i < stmts->n && !diag_stopped(ev->diag) && !ev->exhausted; i++) {
 		struct ast *s = stmts->v[i];
 		switch (s->kind) {
 		case AST_LET: {

@@ -10,6 +10,10 @@
 #define LANG_MAX_ITERATIONS 10000000
 #define LANG_MAX_DEPTH 256
 #define LANG_MAX_PIXELS (1 << 28)
+/* Not in LANGUAGE.md: the iteration limit bounds loops, but a loop multiplies the work
+ * and the objects of its body; these bound the whole evaluation. */
+#define LANG_MAX_OBJECTS 10000000
+#define LANG_MAX_STEPS 500000000
 
 /* Evaluates statements that lang_check accepted without errors (nslots is what it
  * returned) into out, which scene_desc_init prepared. Range errors go to d. */

@@ -73,4 +73,16 @@ expect_grep "$work/err" 'note: when i = 999999$'
 # 999 nested loops of one iteration each: the for nesting allowed by the bracket limit
 gen "$work/deep.scn" "print(''.join('for i%d in 0 .. 1 {\n' % k for k in range(998)) + 'sphere { <i0,0,0>, 1 }\n' + '}'*998)"
 expect_capped 0 10 "$SCN" check "$work/deep.scn"
+
+# a loop multiplies its body's work: the evaluation as a whole has a budget of steps
+gen "$work/steps.scn" "print('for i in 0 .. 10000000 { let a = max(' + ', '.join(['i'] * 60) + ') }')"
+expect_capped 1 30 "$SCN" check "$work/steps.scn"
+expect_grep "$work/err" ":1:[0-9]+: error: the scene takes more than 500000000 evaluation steps \\(its loops do too much work\\)$"
+# ... and of objects (10^7 two-sphere iterations stop at 10^7 objects; about 1 GB before
+# the error, too much for the sanitizer build's shadow memory)
+if [ -z "$sanitized" ]; then
+	gen "$work/objects.scn" "print('for i in 0 .. 10000000 { sphere { <i,0,0>, 1 } sphere { <i,1,0>, 1 } }')"
+	expect_capped 1 30 "$SCN" check "$work/objects.scn"
+	expect_grep "$work/err" ": error: the scene makes more than 10000000 objects$"
+fi
 finish
