@@ -55,14 +55,16 @@ static struct ray sample_ray(const struct camera *cam, const struct sampler *sm,
 }
 
 /* One pixel: the mean of its samples (Welford's running mean and variance), stopping
- * early once the standard error of every channel is below the target. Adds the
- * variance of the pixel's mean to *error_var, for the image's error estimate. */
+ * early once the standard error of every channel is below the target. Adds an estimate
+ * of the squared error of the pixel's mean to *error_var: the difference of the means of
+ * its even and odd samples, which unlike the sample variance also holds for stratified
+ * patterns, whose halves are stratified alike (the "half-buffer" estimate). */
 static struct vec3 render_pixel(const struct scene *sc, struct sampler *sm, double *xy, int px, int py,
                                 struct ray_stats *st, double *error_var)
 {
 	const struct sampling *sp = &sc->sampling;
 	sampler_pixel(sm, (uint32_t)px, (uint32_t)py, xy);
-	struct vec3 mean = v3s(0), m2 = v3s(0);
+	struct vec3 mean = v3s(0), m2 = v3s(0), half[2] = { v3s(0), v3s(0) };
 	int k = 0;
 	for (int i = 0; i < sp->count; i++) {
 		struct ray r = sample_ray(&sc->camera, sm, px, py, i, xy[2 * i], xy[2 * i + 1]);
@@ -72,6 +74,7 @@ static struct vec3 render_pixel(const struct scene *sc, struct sampler *sm, doub
 			st->nonfinite++; /* counted, shown by --stats, and kept out of the image */
 			continue;
 		}
+		half[k % 2] = vadd(half[k % 2], c);
 		k++;
 		struct vec3 delta = vsub(c, mean);
 		mean = vadd(mean, vscale(delta, 1.0 / k));
@@ -82,8 +85,11 @@ static struct vec3 render_pixel(const struct scene *sc, struct sampler *sm, doub
 				break;
 		}
 	}
-	if (k > 1)
-		*error_var += (m2.x + m2.y + m2.z) / ((double)(k - 1) * k * 3);
+	if (k > 1) {
+		double na = (k + 1) / 2, nb = k / 2;
+		struct vec3 d = vsub(vscale(half[0], 1 / na), vscale(half[1], 1 / nb));
+		*error_var += vdot(d, d) / 3 * (na * nb / ((na + nb) * (na + nb)));
+	}
 	return mean;
 }
 
@@ -181,8 +187,8 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 	memset(st, 0, sizeof *st);
 	double error_var = 0;
 	for (int i = 0; i < started; i++) {
-		error_var += workers[i].error_var;
 		pthread_join(workers[i].thread, NULL);
+		error_var += workers[i].error_var;
 		st->camera += workers[i].stats.camera;
 		st->shadow += workers[i].stats.shadow;
 		st->reflection += workers[i].stats.reflection;

@@ -176,7 +176,7 @@ static void poisson_tile(int count, uint64_t *tile)
 /* The jittered pattern's per-sampler scratch, sized by count, rows and q. */
 static void jittered_scratch(struct sampler *sm)
 {
-	sm->order = xmalloc((size_t)sm->count * sizeof *sm->order);
+	sm->order = xmalloc(2 * (size_t)sm->count * sizeof *sm->order); /* the order, then scratch */
 	sm->xsub = xmalloc((size_t)sm->rows * sizeof *sm->xsub);
 	sm->ysub[0] = xmalloc((size_t)sm->q * sizeof *sm->ysub[0]);
 	sm->ysub[1] = xmalloc(((size_t)sm->q + 1) * sizeof *sm->ysub[1]);
@@ -268,16 +268,59 @@ static inline uint32_t row_start(const struct sampler *sm, uint32_t r)
  * the sub-row given by a permutation of its place in the row, so that the y projection
  * holds exactly one point in each of N slices, and the sub-column given by a permutation
  * of its row, so that the x projection is stratified too (exactly so for square N). The
- * cells come in random order, so that any prefix of the samples is spread.
+ * cells are dealt to the samples by checkerboard colour, each colour in random order
+ * (deal_checkerboard), so that any prefix of the samples is spread.
  * Why correlated permutations, one for all the cells of a row (or place), rather than
  * plain jittering or independent ones: at N = 16 and 256 they measured 20 to 40% lower
  * error on edges (a disc, half-planes) and 3 to 4 times lower on a smooth bump; only a
  * saddle such as x*y comes out a little worse than plain jittering (0.0164 against
  * 0.0147 RMS at N = 16). */
+/* Which sample each cell gets: the cells of one colour of a checkerboard (row + column
+ * even) go to the even samples, the others to the odd ones, each colour in random order.
+ * Any prefix of the samples is still spread over the pixel, and the even and odd halves
+ * are independent of each other, each spread over the whole pixel: the difference of
+ * their means estimates the error of the pixel's mean (render.c), where a random split
+ * of the cells would make the halves complementary and the estimate too large. */
+static void deal_checkerboard(struct sampler *sm, struct rng *r)
+{
+	uint32_t n = (uint32_t)sm->count, rows = (uint32_t)sm->rows;
+	uint32_t *cells = sm->order + n;   /* scratch: the cells of each colour, then shuffled */
+	uint32_t count[2] = { 0, 0 };
+	for (uint32_t row = 0, start = 0; row < rows; row++) {
+		uint32_t end = row_start(sm, row + 1);
+		for (uint32_t j = 0; j < end - start; j++)
+			count[(row + j) % 2]++;
+		start = end;
+	}
+	uint32_t *colour[2] = { cells, cells + count[0] };
+	uint32_t fill[2] = { 0, 0 };
+	for (uint32_t row = 0, start = 0; row < rows; row++) {
+		uint32_t end = row_start(sm, row + 1);
+		for (uint32_t j = 0; j < end - start; j++) {
+			int c = (int)((row + j) % 2);
+			colour[c][fill[c]++] = start + j;
+		}
+		start = end;
+	}
+	for (int c = 0; c < 2; c++)
+		for (uint32_t i = 0; i + 1 < count[c]; i++) { /* Fisher-Yates */
+			uint32_t j = i + rng_below(r, count[c] - i);
+			uint32_t t = colour[c][i];
+			colour[c][i] = colour[c][j];
+			colour[c][j] = t;
+		}
+	/* deal alternately; the larger colour's extra cells take the last samples */
+	uint32_t next = 0, taken[2] = { 0, 0 };
+	while (next < n)
+		for (int c = 0; c < 2 && next < n; c++)
+			if (taken[c] < count[c])
+				sm->order[colour[c][taken[c]++]] = next++;
+}
+
 static void pixel_jittered(struct sampler *sm, struct rng *r, double *xy)
 {
 	uint32_t n = (uint32_t)sm->count, rows = (uint32_t)sm->rows, q = (uint32_t)sm->q;
-	shuffle(r, sm->order, n, n);
+	deal_checkerboard(sm, r);
 	shuffle(r, sm->xsub, rows, rows);
 	shuffle(r, sm->ysub[0], q, q);
 	if (sm->rem)

@@ -7,3 +7,5 @@ TESTS += tests/cli/diff.sh
 EXTRA_DIST += tests/cli/diff.sh
 TESTS += tests/cli/pov.sh
 EXTRA_DIST += tests/cli/pov.sh
+TESTS += tests/cli/estimate.sh
+EXTRA_DIST += tests/cli/estimate.sh
