@@ -5,3 +5,4 @@ scn_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
 scn_LDADD = lang/libscnlang.a $(RENDER_LIBS)
 scn_SOURCES += src/cmd_diff.c
 scn_SOURCES += %D%/cmd_pov.c
+scn_SOURCES += %D%/cmd_converge.c %D%/plot.c %D%/plot.h %D%/povray.c %D%/povray.h

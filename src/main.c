@@ -8,14 +8,6 @@
 
 #include "cli.h"
 
-static int not_built(const struct command *self, int argc, char **argv)
-{
-	(void)argc;
-	(void)argv;
-	fprintf(stderr, "scn: '%s' is not built yet in scn %s\n", self->name, PACKAGE_VERSION);
-	return EXIT_RENDER;
-}
-
 static const struct command commands[] = {
 	{ "check", "scn check [--dump] SCENE",
 	  "Parses and checks SCENE ('-' reads standard input) with its includes, and reports\n"
@@ -83,8 +75,32 @@ static const struct command commands[] = {
 	  "on standard error) or the sizes differ, 2 bad command line, 3 an image could not be\n"
 	  "read or the heatmap written.\n",
 	  cmd_diff },
-	{ "converge", "scn converge SCENE [--reference REF] [--budget SECONDS] [--csv OUT.csv] [--plot OUT.svg]",
-	  "Reports image error against render time. Not built yet in this version.\n", not_built },
+	{ "converge",
+	  "scn converge SCENE [--reference REF] [--budget SECONDS] [--csv OUT.csv] [--plot OUT.svg]\n"
+	  "                    [-j THREADS] [-W WIDTH] [-H HEIGHT] [--reference-samples N] [--no-pov] [-q]",
+	  "Error against run time. Loads SCENE once and renders it at rising sample counts (1, 4,\n"
+	  "16, ...) for the patterns random, jittered, poisson and grid, and adaptively (jittered,\n"
+	  "target_error 0.02, 0.01, ...); POV-Ray renders the scene's twin (scn pov) with -A, then\n"
+	  "+A0.0 +AM2 +R1, +R2, ... -J. Each image is compared with one reference, clipped to\n"
+	  "[0, 1]. The points run cheapest first while they fit in the budget. Prints a table\n"
+	  "(series, setting, samples per pixel, seconds, RMSE, estimated RMSE); its last line is the\n"
+	  "ratio of scn's time to POV-Ray's at the lowest RMSE both reach, for scn's fastest series\n"
+	  "there. scn's seconds are its render alone (its load, lower and BVH time is printed once\n"
+	  "and added for the ratio); POV-Ray's are its whole process, start-up included.\n"
+	  "  --reference REF  the reference image (PNG, EXR, PPM); by default a grid render with\n"
+	  "                   64 x 64, 32 x 32 or 16 x 16 samples, the most that takes at most half\n"
+	  "                   the budget; the series go up to a 16th of its count\n"
+	  "  --reference-samples N  the default reference's count instead (a square, 16 or more)\n"
+	  "  --budget S       seconds for everything, 120 by default\n"
+	  "  --csv OUT.csv    the table as CSV\n"
+	  "  --plot OUT.svg   RMSE against seconds, log-log, one line per series\n"
+	  "  -j               threads for scn and POV-Ray (+WT); 0 (the default): every core\n"
+	  "  -W, -H           the image size (one alone keeps the scene's aspect ratio)\n"
+	  "  --no-pov         no POV-Ray series (also when povray is not on PATH)\n"
+	  "  -q               no progress lines on standard error\n"
+	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
+	  "be read or written, 4 the render failed.\n",
+	  cmd_converge },
 };
 enum { NCOMMANDS = sizeof commands / sizeof commands[0] };
 

@@ -9,3 +9,5 @@ TESTS += tests/cli/pov.sh
 EXTRA_DIST += tests/cli/pov.sh
 TESTS += tests/cli/estimate.sh
 EXTRA_DIST += tests/cli/estimate.sh
+TESTS += tests/cli/converge.sh
+EXTRA_DIST += tests/cli/converge.sh
