@@ -67,6 +67,17 @@ static struct affine affine_inverse(const struct xform *x)
 	return inv;
 }
 
+/* Whether x mirrors space (its linear part has a negative determinant): a triangle's
+ * corners then go the other way round, and are swapped so that (B-A) x (C-A) still
+ * points to the side that was the outside (a mirrored closed mesh stays solid). */
+static bool xform_mirrors(const struct xform *x)
+{
+	const double (*m)[4] = x->m;
+	return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+	               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]) <
+	       0;
+}
+
 /* Normals transform by the inverse transpose of the linear part. */
 static struct vec3 xform_normal(const struct affine *inv, struct vec3 n)
 {
@@ -177,6 +188,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
 	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
 	struct affine inv = affine_inverse(x);
+	bool mirrored = xform_mirrors(x);
 	uint32_t surface = add_surface(lw, o);
 	uint32_t base = (uint32_t)sc->nvertices;
 	for (size_t i = 0; i < data->nvertices; i++)
@@ -196,6 +208,8 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 				const uint32_t *v = data->faces[f];
 				struct vec3 a = sc->vertices[base + v[0]], b = sc->vertices[base + v[1]], c = sc->vertices[base + v[2]];
 				struct vec3 fn = vcross(vsub(b, a), vsub(c, a));
+				if (mirrored)
+					fn = vneg(fn);
 				for (int k = 0; k < 3; k++)
 					normals[v[k]] = vadd(normals[v[k]], fn);
 			}
@@ -217,6 +231,11 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		/* a vertex without a usable normal (all its faces degenerate): shade the face flat */
 		if (o->smooth && (vzero(sc->normals[n[0]]) || vzero(sc->normals[n[1]]) || vzero(sc->normals[n[2]])))
 			n[0] = n[1] = n[2] = NO_NORMALS;
+		if (mirrored) {
+			uint32_t t = v[1], tn = n[1];
+			v[1] = v[2], n[1] = n[2];
+			v[2] = t, n[2] = tn;
+		}
 		dropped += !add_triangle(lw, v, n, surface);
 	}
 	if (dropped)
@@ -256,6 +275,11 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 		uint32_t v[3], n[3] = { NO_NORMALS, NO_NORMALS, NO_NORMALS };
 		for (int k = 0; k < 3; k++)
 			v[k] = add_vertex(lw, xform_point(x, v3a(o->u.triangle.v[k])));
+		if (xform_mirrors(x)) {
+			uint32_t t = v[1];
+			v[1] = v[2];
+			v[2] = t;
+		}
 		uint32_t surface = add_surface(lw, o);
 		if (!add_triangle(lw, v, n, surface))
 			sc->nvertices -= 3; /* eval.c warned already */

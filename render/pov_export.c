@@ -574,7 +574,7 @@ static bool smooth_kept(const struct scene *sc, size_t i)
 static void analyse(struct pov *p)
 {
 	const struct scene *sc = p->sc;
-	size_t kept_as_mesh2 = 0, open = 0, boundary = 0;
+	size_t kept_as_mesh2 = 0, open = 0, boundary = 0, smooth_glass = 0;
 	for (size_t first = 0; first < sc->ntriangles;) {
 		size_t last = run_end(sc, first);
 		const struct triangle *t = &sc->triangles[first];
@@ -596,6 +596,12 @@ static void analyse(struct pov *p)
 		}
 		if (!vzero(m->transmit) && m->ior != 1 && (last - first < 4 || !closed_surface(sc, first, last)))
 			open++;
+		else if (!vzero(m->transmit) && m->ior != 1)
+			for (size_t i = first; i < last; i++)
+				if (sc->triangles[i].n[0] != NO_NORMALS) {
+					smooth_glass++;
+					break;
+				}
 		first = last;
 	}
 	if (kept_as_mesh2)
@@ -611,6 +617,11 @@ static void analyse(struct pov *p)
 		        " enters such an object at its first hit and leaves at the next, while scn decides by the side"
 		        " of each face (not pixel-exact where rays refract through them)",
 		     open);
+	if (smooth_glass)
+		note(p, "// %zu refracting mesh(es) are shaded smooth: a ray refracted by an interpolated normal can stay on"
+		        " the side of the face it came from; POV-Ray counts it as crossed, scn goes by the side of each face"
+		        " it hits (not pixel-exact near their silhouettes)",
+		     smooth_glass);
 	size_t nested = 0, ntransmit = 0;
 	size_t *glass = xmalloc((sc->nspheres ? sc->nspheres : 1) * sizeof *glass);
 	for (size_t i = 0; i < sc->nspheres; i++)

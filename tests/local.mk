@@ -17,3 +17,4 @@ include tests/hostile/local.mk
 EXTRA_DIST += tests/unit/check.h tests/unit/random.h
 include tests/unit/local.mk
 include tests/render/local.mk
+include tests/pov/local.mk
