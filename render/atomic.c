@@ -15,8 +15,10 @@
 /* The name is short and fixed apart from the counter, so that a long final name cannot
  * make it too long, and O_EXCL keeps two writers (or a stale file) apart. The mode 0666
  * lets the umask decide the permissions, as for any file the user creates. */
-int atomic_open(const char *path, char **tmp)
+int atomic_open(const char *path, char **tmp, char *err, size_t errlen)
 {
+	if (errlen)
+		err[0] = '\0';
 	static unsigned counter;       /* files are written from one thread */
 	const char *slash = strrchr(path, '/');
 	int dirlen = slash ? (int)(slash - path + 1) : 0;
@@ -33,8 +35,8 @@ int atomic_open(const char *path, char **tmp)
 	int e = errno;
 	free(*tmp);
 	*tmp = NULL;
-	errno = e;
-	return -1;
+	snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
+	return -e;
 }
 
 int atomic_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t errlen)

@@ -5,9 +5,10 @@
 
 #include <stddef.h>
 
-/* Opens a new, empty temporary file in the directory of path; its name goes to *tmp.
- * Returns the descriptor, or -1 with errno set (*tmp is then freed and NULL). */
-int atomic_open(const char *path, char **tmp);
+/* Opens a new, empty temporary file in the directory of path; its name goes to *tmp, and
+ * err is emptied for the writer's messages. Returns the descriptor, or minus an errno
+ * value with "cannot write 'path': reason" in err (*tmp is then freed and NULL). */
+int atomic_open(const char *path, char **tmp, char *err, size_t errlen);
 
 /* Ends what atomic_open began. When rc is 0, flushes fd to disk, closes it and renames
  * tmp over path; otherwise, or when a step fails, closes fd and removes tmp, leaving

@@ -145,15 +145,10 @@ int image_write(const struct image *img, const char *path, const struct image_wr
 		return EINVAL;
 	}
 
-	if (errlen)
-		err[0] = '\0';
 	char *tmp;
-	int fd = atomic_open(path, &tmp);
-	if (fd < 0) {
-		int e = errno;
-		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
-		return e;
-	}
+	int fd = atomic_open(path, &tmp, err, errlen);
+	if (fd < 0)
+		return -fd;
 	int rc;
 	switch ((enum image_format)format) {
 	case IMAGE_PNG: rc = image_png_write(img, fd, path, o.bit_depth, err, errlen); break;

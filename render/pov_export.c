@@ -1116,15 +1116,10 @@ int pov_export(const struct scene *sc, const struct pov_export_options *opt, FIL
 int pov_export_file(const struct scene *sc, const struct pov_export_options *opt, const char *path, char *err,
                     size_t errlen)
 {
-	if (errlen)
-		err[0] = '\0';
 	char *tmp;
-	int fd = atomic_open(path, &tmp);
-	if (fd < 0) {
-		int e = errno;
-		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
-		return e;
-	}
+	int fd = atomic_open(path, &tmp, err, errlen);
+	if (fd < 0)
+		return -fd;
 	/* a stream on a second descriptor: fclose flushes and closes it, and atomic_finish
 	 * syncs and closes the first */
 	int dup_fd = dup(fd);

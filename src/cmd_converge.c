@@ -555,14 +555,10 @@ static void print_table(const struct run *r)
 /* Writes text through a temporary file renamed into place; false with a message. */
 static bool write_file(const char *path, const char *text, size_t len)
 {
-	char *tmp, err[1024] = "";
-	int fd = atomic_open(path, &tmp);
-	if (fd < 0) {
-		fprintf(stderr, "scn: cannot write '%s': %s\n", path, strerror(errno));
-		return false;
-	}
-	int rc = image_write_all(fd, text, len);
-	if (atomic_finish(fd, tmp, path, rc, err, sizeof err) != 0) {
+	char *tmp, err[1024];
+	int fd = atomic_open(path, &tmp, err, sizeof err);
+	int rc = fd < 0 ? -fd : atomic_finish(fd, tmp, path, image_write_all(fd, text, len), err, sizeof err);
+	if (rc != 0) {
 		fprintf(stderr, "scn: %s\n", err);
 		return false;
 	}
