@@ -1031,28 +1031,25 @@ static void write_header(struct pov *p)
 	           " ambient_light rgb 0 }\n", sc->max_depth);
 }
 
+/* "sphere { C, r MATERIAL }", "plane { N, d MATERIAL }": POV-Ray spells both alike. */
+static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 v, double x, uint32_t surface)
+{
+	fprintf(p->f, "%s { ", keyword);
+	vec(p->f, v);
+	fputs(", ", p->f);
+	num(p->f, x);
+	fputc(' ', p->f);
+	material_ref(p, surface);
+	fputs(" }\n", p->f);
+}
+
 static void write_objects(struct pov *p)
 {
 	const struct scene *sc = p->sc;
-	FILE *out = p->f;
-	for (size_t i = 0; i < sc->nspheres; i++) {
-		fputs("sphere { ", out);
-		vec(out, sc->spheres[i].center);
-		fputs(", ", out);
-		num(out, sc->spheres[i].radius);
-		fputc(' ', out);
-		material_ref(p, sc->spheres[i].surface);
-		fputs(" }\n", out);
-	}
-	for (size_t i = 0; i < sc->nplanes; i++) {
-		fputs("plane { ", out);
-		vec(out, sc->planes[i].normal);
-		fputs(", ", out);
-		num(out, sc->planes[i].offset);
-		fputc(' ', out);
-		material_ref(p, sc->planes[i].surface);
-		fputs(" }\n", out);
-	}
+	for (size_t i = 0; i < sc->nspheres; i++)
+		write_vec_num_shape(p, "sphere", sc->spheres[i].center, sc->spheres[i].radius, sc->spheres[i].surface);
+	for (size_t i = 0; i < sc->nplanes; i++)
+		write_vec_num_shape(p, "plane", sc->planes[i].normal, sc->planes[i].offset, sc->planes[i].surface);
 	for (size_t first = 0; first < sc->ntriangles;) {
 		size_t last = run_end(sc, first);
 		if (p->how[first] == WRITE_TRIANGLE)
