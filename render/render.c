@@ -55,7 +55,8 @@ static struct ray sample_ray(const struct camera *cam, const struct sampler *sm,
 }
 
 /* One pixel: the mean of its samples (Welford's running mean and variance), stopping
- * early once the standard error of every channel is below the target. Adds an estimate
+ * early once the standard error of every channel is below the target at two successive
+ * checks. Adds an estimate
  * of the squared error of the pixel's mean to *error_var: the difference of the means of
  * its even and odd samples, which unlike the sample variance also holds for stratified
  * patterns, whose halves are stratified alike (the "half-buffer" estimate). */
@@ -66,6 +67,7 @@ static struct vec3 render_pixel(const struct scene *sc, struct sampler *sm, doub
 	sampler_pixel(sm, (uint32_t)px, (uint32_t)py, xy);
 	struct vec3 mean = v3s(0), m2 = v3s(0), half[2] = { v3s(0), v3s(0) };
 	int k = 0;
+	bool passed = false;          /* the last adaptive check found the error below the target */
 	for (int i = 0; i < sp->count; i++) {
 		struct ray r = sample_ray(&sc->camera, sm, px, py, i, xy[2 * i], xy[2 * i + 1]);
 		st->camera++;
@@ -79,10 +81,14 @@ static struct vec3 render_pixel(const struct scene *sc, struct sampler *sm, doub
 		struct vec3 delta = vsub(c, mean);
 		mean = vadd(mean, vscale(delta, 1.0 / k));
 		m2 = vadd(m2, vmul(delta, vsub(c, mean)));
-		if (sp->target_error > 0 && k >= MIN_ADAPTIVE && i + 1 < sp->count) {
+		if (sp->target_error > 0 && k >= MIN_ADAPTIVE && (k & (k - 1)) == 0 && i + 1 < sp->count) {
+			/* checked at 8, 16, 32, ... samples; a pixel stops once two checks in a row
+			 * pass, so that one run of agreeing samples on an edge does not end it */
 			double se2 = vmaxc(m2) / ((double)(k - 1) * k);
-			if (se2 < sp->target_error * sp->target_error)
+			bool below = se2 < sp->target_error * sp->target_error;
+			if (below && passed)
 				break;
+			passed = below;
 		}
 	}
 	if (k > 1) {
