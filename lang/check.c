@@ -15,6 +15,7 @@
 #include "builtins.h"
 #include "lang.h"
 #include "scene_desc.h"
+#include "suggest.h"
 #include "xalloc.h"
 
 /* ---- the symbol table: one chain of bindings per name, innermost first ---- */
@@ -92,67 +93,6 @@ static struct binding *lookup(struct checker *c, const char *name)
 {
 	struct name_entry *e = entry_for(c, name, false);
 	return e ? e->top : NULL;
-}
-
-/* Edit distance, for "did you mean"; gives up (returns limit + 1) beyond limit. */
-static unsigned edit_distance(const char *a, const char *b, unsigned limit)
-{
-	size_t la = strlen(a), lb = strlen(b);
-	if (la > 64 || lb > 64 || (la > lb ? la - lb : lb - la) > limit)
-		return limit + 1;
-	unsigned row[65];
-	for (size_t j = 0; j <= lb; j++)
-		row[j] = (unsigned)j;
-	for (size_t i = 1; i <= la; i++) {
-		unsigned diag = row[0];
-		row[0] = (unsigned)i;
-		for (size_t j = 1; j <= lb; j++) {
-			unsigned up = row[j];
-			unsigned best = diag + (a[i - 1] != b[j - 1]);
-			if (up + 1 < best)
-				best = up + 1;
-			if (row[j - 1] + 1 < best)
-				best = row[j - 1] + 1;
-			row[j] = best;
-			diag = up;
-		}
-	}
-	return row[lb];
-}
-
-/* Keeps the closest candidate to name seen so far. */
-struct suggestion {
-	const char *name;
-	const char *best;
-	unsigned dist;
-};
-
-static void suggest_init(struct suggestion *s, const char *name)
-{
-	size_t len = strlen(name);
-	s->name = name;
-	s->best = NULL;
-	/* the most edits still worth suggesting: none for one or two letters ('r' is not 'i') */
-	s->dist = len <= 2 ? 0 : len <= 4 ? 1 : len <= 8 ? 2 : 3;
-	s->dist++;
-}
-
-static void suggest_consider(struct suggestion *s, const char *candidate)
-{
-	unsigned d = edit_distance(s->name, candidate, s->dist - 1);
-	if (d < s->dist) {
-		s->dist = d;
-		s->best = candidate;
-	}
-}
-
-/* "; did you mean 'x'?" or "" */
-static const char *suggest_text(const struct suggestion *s, char *buf, size_t size)
-{
-	if (!s->best)
-		return "";
-	snprintf(buf, size, "; did you mean '%s'?", s->best);
-	return buf;
 }
 
 /* Visible names of the given kind (values include loop variables and pi, but not the
@@ -575,7 +515,6 @@ static void check_material_ref(struct checker *c, struct ast *id)
 
 static bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
                         struct span where, struct ast *seen[KW_COUNT_ALL]);
-static const char *pov_hint(const char *name, char *buf, size_t size);
 
 static void check_pattern(struct checker *c, struct ast *id)
 {
@@ -715,7 +654,7 @@ static bool check_block(struct checker *c, const struct block_spec *spec, struct
 			suggest_init(&s, item_name(item));
 			for (size_t k = 0; k < spec->nattrs; k++)
 				suggest_consider(&s, kw_name(spec->attrs[k].kw));
-			const char *hint = s.best ? suggest_text(&s, buf, sizeof buf) : pov_hint(item_name(item), buf, sizeof buf);
+			const char *hint = s.best ? suggest_text(&s, buf, sizeof buf) : suggest_pov_hint(item_name(item), buf, sizeof buf);
 			diag_error(c->diag, item->u.item.name_span, "unknown attribute '%s' in %s%s", item_name(item),
 			           spec->what, hint ? hint : "");
 			complete = false;
@@ -935,55 +874,6 @@ static void check_include(struct checker *c, struct ast *inc)
 	free(real);
 }
 
-/* POV-Ray's words that users bring along, with what scn writes instead. */
-static const char *const pov_words[][2] = {
-	{ "light_source", "scn writes light { position P  color C }" },
-	{ "background", "scn writes skybox { color C }" },
-	{ "sky_sphere", "scn writes skybox { zenith C  horizon C } or skybox { image \"FILE\" }" },
-	{ "global_settings", "scn writes max_depth N and samples { ... } as statements" },
-	{ "max_trace_level", "scn writes max_depth N" },
-	{ "smooth_triangle", "scn writes mesh { vertices { ... } faces { ... } normals { ... } smooth }" },
-	{ "mesh2", "scn writes mesh { vertices { ... } faces { ... } }" },
-	{ "pigment", "scn writes material { diffuse C }" },
-	{ "texture", "scn writes material { diffuse C  specular S ... }" },
-	{ "finish", "scn writes material { specular S  shininess N  reflect R ... }" },
-	{ "interior", "scn writes material { transmit T  ior N }" },
-	{ "normal", "scn has no normal perturbation" },
-	{ "ambient", "scn has no ambient term; emit adds a constant colour" },
-	{ "phong", "scn's highlight is Blinn-Phong: specular and shininess" },
-	{ "roughness", "scn writes shininess, the Blinn-Phong exponent (1 / roughness)" },
-	{ "reflection", "scn writes reflect" },
-	{ "filter", "scn's transparency is transmit" },
-	{ "angle", "scn's camera writes fov, the horizontal field of view" },
-	{ "sky", "scn's camera writes up" },
-	{ "right", "scn's camera takes its aspect from resolution" },
-	{ "colour", "scn writes color" },
-	{ "object", "scn has no object statement; write the shape itself" },
-};
-
-/* Shapes POV-Ray has and scn has not. */
-static const char *const pov_shapes[] = {
-	"box", "cylinder", "cone", "torus", "disc", "blob", "lathe", "sor", "prism", "superellipsoid",
-	"height_field", "isosurface", "text", "polygon", "bicubic_patch", "union", "difference",
-	"intersection", "merge", "quadric", "poly", "cubic", "quartic", "ovus", "parametric",
-};
-
-/* "; HINT" for a name POV-Ray users write, or NULL. */
-static const char *pov_hint(const char *name, char *buf, size_t size)
-{
-	for (size_t i = 0; i < sizeof pov_words / sizeof pov_words[0]; i++)
-		if (strcmp(name, pov_words[i][0]) == 0) {
-			snprintf(buf, size, " (%s)", pov_words[i][1]);
-			return buf;
-		}
-	for (size_t i = 0; i < sizeof pov_shapes / sizeof pov_shapes[0]; i++)
-		if (strcmp(name, pov_shapes[i]) == 0) {
-			snprintf(buf, size, " (scn has spheres, planes, triangles and meshes: model it as a mesh)");
-			return buf;
-		}
-	return NULL;
-}
-
 static void unknown_statement(struct checker *c, struct ast *s)
 {
 	static const enum kw statements[] = {
@@ -992,7 +882,7 @@ static void unknown_statement(struct checker *c, struct ast *s)
 	};
 	const char *name = s->u.item.name;
 	char buf[160];
-	const char *hint = pov_hint(name, buf, sizeof buf);
+	const char *hint = suggest_pov_hint(name, buf, sizeof buf);
 	if (!hint) {
 		struct suggestion sg;
 		suggest_init(&sg, name);

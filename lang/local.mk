@@ -21,3 +21,4 @@ lang_libscnlang_a_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
 # Allocation that never fails silently, shared by lang/ and render/.
 noinst_LIBRARIES += lang/libscnutil.a
 lang_libscnutil_a_SOURCES = %D%/xalloc.c %D%/xalloc.h
+lang_libscnlang_a_SOURCES += %D%/suggest.c %D%/suggest.h
