@@ -26,6 +26,18 @@ int cli_help(const struct command *cmd)
 	return 0;
 }
 
+int cli_scene_arg(const struct command *cmd, const char *arg, const char **scene)
+{
+	if (arg[0] == '-' && arg[1] != '\0')
+		return 0;
+	if (*scene) {
+		cli_usage_error(cmd, "more than one scene given ('%s')", arg);
+		return -1;
+	}
+	*scene = arg;
+	return 1;
+}
+
 const char *cli_value(int argc, char **argv, int *i)
 {
 	if (*i + 1 >= argc)

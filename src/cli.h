@@ -18,6 +18,10 @@ struct command {
 int cli_usage_error(const struct command *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* Prints the command's usage and help to standard output; returns 0. */
 int cli_help(const struct command *cmd);
+/* The scene argument: when arg is not an option ('-' alone is standard input), takes it
+ * into *scene and returns 1, or returns -1 after a usage message when a scene was given
+ * already. Returns 0 for an option, which the caller handles. */
+int cli_scene_arg(const struct command *cmd, const char *arg, const char **scene);
 /* The value of option argv[*i] (the next argument), advancing *i; NULL when missing. */
 const char *cli_value(int argc, char **argv, int *i);
 /* The name of a scene's output in the current directory: its name with ext (".png"),

@@ -15,16 +15,17 @@ int cmd_check(const struct command *self, int argc, char **argv)
 	bool dump = false;
 	const char *scene = NULL;
 	for (int i = 1; i < argc; i++) {
+		int taken = cli_scene_arg(self, argv[i], &scene);
+		if (taken < 0)
+			return EXIT_USAGE;
+		if (taken)
+			continue;
 		if (strcmp(argv[i], "--dump") == 0)
 			dump = true;
 		else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
 			return cli_help(self);
-		else if (argv[i][0] == '-' && argv[i][1] != '\0')
-			return cli_usage_error(self, "unknown option '%s' for check", argv[i]);
-		else if (scene)
-			return cli_usage_error(self, "more than one scene given ('%s')", argv[i]);
 		else
-			scene = argv[i];
+			return cli_usage_error(self, "unknown option '%s' for check", argv[i]);
 	}
 	if (!scene)
 		return cli_usage_error(self, "no scene given");

@@ -121,12 +121,11 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 			return cli_help(self) - 1;
 		if (strcmp(opt, "--no-pov") == 0) { a->no_pov = true; continue; }
 		if (strcmp(opt, "-q") == 0) { a->quiet = true; continue; }
-		if (opt[0] != '-' || opt[1] == '\0') {
-			if (a->scene)
-				return cli_usage_error(self, "more than one scene given ('%s')", opt);
-			a->scene = opt;
+		int taken = cli_scene_arg(self, opt, &a->scene);
+		if (taken < 0)
+			return EXIT_USAGE;
+		if (taken)
 			continue;
-		}
 		static const char *const valued[] = { "--reference", "--budget", "--csv", "--plot", "-j", "-W", "-H",
 		                                      "--reference-samples" };
 		bool known = false;

@@ -19,18 +19,17 @@ int cmd_pov(const struct command *self, int argc, char **argv)
 	const char *scene = NULL, *out_arg = NULL;
 	for (int i = 1; i < argc; i++) {
 		const char *opt = argv[i];
+		int taken = cli_scene_arg(self, opt, &scene);
+		if (taken < 0)
+			return EXIT_USAGE;
+		if (taken)
+			continue;
 		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
 			return cli_help(self);
-		if (strcmp(opt, "-o") == 0) {
-			if (!(out_arg = cli_value(argc, argv, &i)))
-				return cli_usage_error(self, "option '-o' needs a value");
-		} else if (opt[0] == '-' && opt[1] != '\0') {
+		if (strcmp(opt, "-o") != 0)
 			return cli_usage_error(self, "unknown option '%s' for pov", opt);
-		} else if (scene) {
-			return cli_usage_error(self, "more than one scene given ('%s')", opt);
-		} else {
-			scene = opt;
-		}
+		if (!(out_arg = cli_value(argc, argv, &i)))
+			return cli_usage_error(self, "option '-o' needs a value");
 	}
 	if (!scene)
 		return cli_usage_error(self, "no scene given");

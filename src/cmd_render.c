@@ -51,12 +51,11 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 		if (strcmp(opt, "--progress") == 0) { a->progress = 1; continue; }
 		if (strcmp(opt, "--no-progress") == 0) { a->progress = 0; continue; }
 		if (strcmp(opt, "-q") == 0) { a->quiet = true; continue; }
-		if (opt[0] != '-' || opt[1] == '\0') {
-			if (a->scene)
-				return cli_usage_error(self, "more than one scene given ('%s')", opt);
-			a->scene = opt;
+		int taken = cli_scene_arg(self, opt, &a->scene);
+		if (taken < 0)
+			return EXIT_USAGE;
+		if (taken)
 			continue;
-		}
 		if (strcmp(opt, "-W") == 0) { target = &a->width; lo = 1; hi = 65536; }
 		else if (strcmp(opt, "-H") == 0) { target = &a->height; lo = 1; hi = 65536; }
 		else if (strcmp(opt, "-s") == 0) { target = &a->samples; lo = 1; hi = 65536; }
