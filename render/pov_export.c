@@ -83,14 +83,20 @@ static void num(FILE *f, double v)
 	fputs(buf, f);
 }
 
-static void vec(FILE *f, struct vec3 v)
+/* "x, y, z", the inside of a vector */
+static void components(FILE *f, struct vec3 v)
 {
-	fputc('<', f);
 	num(f, v.x);
 	fputs(", ", f);
 	num(f, v.y);
 	fputs(", ", f);
 	num(f, v.z);
+}
+
+static void vec(FILE *f, struct vec3 v)
+{
+	fputc('<', f);
+	components(f, v);
 	fputc('>', f);
 }
 
@@ -104,11 +110,7 @@ static void fvec(FILE *f, struct vec3 v)
 static void vec4(FILE *f, struct vec3 v, double w)
 {
 	fputc('<', f);
-	num(f, v.x);
-	fputs(", ", f);
-	num(f, v.y);
-	fputs(", ", f);
-	num(f, v.z);
+	components(f, v);
 	fputs(", ", f);
 	num(f, w);
 	fputc('>', f);
