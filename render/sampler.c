@@ -276,11 +276,9 @@ static inline uint32_t row_start(const struct sampler *sm, uint32_t r)
  * saddle such as x*y comes out a little worse than plain jittering (0.0164 against
  * 0.0147 RMS at N = 16). */
 /* Which sample each cell gets: the cells of one colour of a checkerboard (row + column
- * even) go to the even samples, the others to the odd ones, each colour in random order.
- * Any prefix of the samples is still spread over the pixel, and the even and odd halves
- * are independent of each other, each spread over the whole pixel: the difference of
- * their means estimates the error of the pixel's mean (render.c), where a random split
- * of the cells would make the halves complementary and the estimate too large. */
+ * even) go to the even samples, the others to the odd ones, each colour in random order,
+ * so that any prefix of the samples, where an adaptive pixel stops, is spread over the
+ * pixel. */
 static void deal_checkerboard(struct sampler *sm, struct rng *r)
 {
 	uint32_t n = (uint32_t)sm->count, rows = (uint32_t)sm->rows;
@@ -364,10 +362,10 @@ static void pixel_poisson(const struct sampler *sm, struct rng *r, double *xy)
 	}
 }
 
-void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, double *xy)
+void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, uint32_t replica, double *xy)
 {
 	/* the pattern is part of the key, so that patterns do not share numbers */
-	struct rng r = { sampler_hash64(sm->seed, px, py, (uint64_t)sm->kind) };
+	struct rng r = { sampler_hash64(sm->seed, px, py, (uint64_t)sm->kind | (uint64_t)replica << 8) };
 	switch (sm->kind) {
 	case SAMPLE_CENTER:
 		for (int i = 0; i < sm->count; i++)

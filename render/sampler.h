@@ -32,11 +32,13 @@ void sampler_free(struct sampler *sm);
 
 /* The sample positions of pixel (px, py): count points in [0,1)^2, point i at xy[2*i],
  * xy[2*i+1] (x along the pixel row, y across rows; the renderer picks y's direction).
- * They depend only on the seed, the pattern and count, px, py and i; not on the thread,
- * the sampler object, or earlier calls. Except for grid, any prefix of the points is
+ * They depend only on the seed, the pattern and count, px, py, replica and i; not on the
+ * thread, the sampler object, or earlier calls. Replica 0 is the image's; another
+ * replica is an independent randomisation of the same pattern (the error estimate's),
+ * the same points for grid and center. Except for grid, any prefix of the points is
  * spread over the whole pixel and unbiased, so an adaptive render may stop early.
  * Writes 2 * count doubles and changes only sm's scratch. */
-void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, double *xy);
+void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, uint32_t replica, double *xy);
 
 /* For the grid pattern: true, and the integer cell of sample i (a = i % n across, b =
  * i / n), whose position sampler_pixel gives as exactly ((a + 0.5) / n, (b + 0.5) / n).

@@ -11,7 +11,9 @@
 struct ray_stats {
 	uint64_t camera, shadow, reflection, refraction;
 	uint64_t nonfinite;            /* radiance samples that were NaN or infinite (must stay 0) */
-	double estimated_rmse;         /* of the image, from each pixel's sample variance (render_image) */
+	uint64_t probe_pixels;         /* pixels rendered twice to estimate the error (render.c) */
+	uint64_t probe_camera;         /* the camera rays of their second replica, not in camera */
+	double estimated_rmse;         /* of the image (render_image); < 0 for grid and center */
 };
 
 /* The colour seen along r (unit direction) by a ray of the given depth (a camera ray

@@ -315,8 +315,7 @@ static int run_scn_step(struct run *r, int si)
 		snprintf(p->setting, sizeof p->setting, "target %g max %d", smp.target_error, smp.count);
 		p->spp = (double)st.camera / npix;
 	}
-	if (smp.count > 1)
-		p->est = st.estimated_rmse;
+	p->est = st.estimated_rmse;
 	r->per_sample = seconds / p->spp;
 	s->last_seconds = seconds;
 	s->last_cost = nominal_cost(r, s, step);

@@ -146,7 +146,10 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
 	        (unsigned long long)st->camera, (unsigned long long)st->shadow, (unsigned long long)st->reflection,
 	        (unsigned long long)st->refraction,
-	        (unsigned long long)(st->camera + st->shadow + st->reflection + st->refraction));
+	        (unsigned long long)(st->camera + st->probe_camera + st->shadow + st->reflection + st->refraction));
+	if (st->probe_pixels)
+		fprintf(stderr, "error estimate: %llu pixels rendered twice, %llu camera rays\n",
+		        (unsigned long long)st->probe_pixels, (unsigned long long)st->probe_camera);
 	fprintf(stderr, "non-finite radiance values: %llu\n", (unsigned long long)st->nonfinite);
 }
 
@@ -223,7 +226,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	if (!a.quiet) {
 		fprintf(stderr, "scn: wrote %s: %d x %d, %d sample%s per pixel, rendered in %.2f s", out, img->width,
 		        img->height, sc.sampling.count, sc.sampling.count == 1 ? "" : "s", render_s);
-		if (sc.sampling.count > 1)
+		if (st.estimated_rmse >= 0)
 			fprintf(stderr, "; estimated RMSE %.3g", st.estimated_rmse);
 		fputc('\n', stderr);
 	}

@@ -30,7 +30,7 @@ expect_grep table.txt '^series +setting +spp +seconds +RMSE +est\. RMSE$'
 for pattern in random jittered poisson grid; do
 	for count in 1 4 16; do
 		est=$num
-		[ "$count" = 1 ] && est=-
+		[ "$pattern" = grid ] && est=-
 		expect_grep table.txt "^scn $pattern +count $count +$count +[0-9]+\.[0-9]{3} +$num +$est\$"
 	done
 	grep -q "^scn $pattern  *count 64 " table.txt && fail "scn $pattern went past a 16th of the reference's count"
@@ -50,9 +50,9 @@ rows=$(grep -cE '^scn [a-z]+ ' table.txt)
 # the error falls as the jittered samples rise
 awk -F, '$1 == "scn jittered" { if (n++ && $5 >= last) bad = 1; last = $5 } END { exit bad || n < 3 }' t.csv ||
 	{ fail "the jittered RMSE does not fall with the count"; grep jittered t.csv; }
-# the scn renders estimate their error (not 0) from 4 samples on
-awk -F, 'NR > 1 && $3 >= 4 && !($6 > 0) { bad = 1 } END { exit bad }' t.csv ||
-	{ fail "an estimated RMSE is missing or 0"; cat t.csv; }
+# the renders of the random patterns estimate their error (not 0), grid's do not
+awk -F, 'NR > 1 && ($1 == "scn grid" ? $6 != "" : !($6 > 0)) { bad = 1 } END { exit bad }' t.csv ||
+	{ fail "an estimated RMSE is missing or 0, or grid has one"; cat t.csv; }
 
 # the SVG: well-formed XML, one line per series and the legend's
 if command -v python3 >/dev/null 2>&1; then

@@ -45,7 +45,7 @@ static void test_range(void)
 			struct sampler *sm = make(kinds[k], n, 99);
 			size_t npix = n > 5000 ? 2 : NPIXELS;
 			for (size_t p = 0; p < npix; p++) {
-				sampler_pixel(sm, pixels[p][0], pixels[p][1], xy);
+				sampler_pixel(sm, pixels[p][0], pixels[p][1], 0, xy);
 				int bad = 0;
 				for (int i = 0; i < 2 * n; i++)
 					bad += !in_unit(xy[i]);
@@ -58,7 +58,7 @@ static void test_range(void)
 		}
 	/* center: the middle, for count 1 and (as documented) for more */
 	struct sampler *sm = make(SAMPLE_CENTER, 4, 0);
-	sampler_pixel(sm, 3, 4, xy);
+	sampler_pixel(sm, 3, 4, 0, xy);
 	for (int i = 0; i < 8; i++)
 		CHECK(xy[i] == 0.5);
 	sampler_free(sm);
@@ -84,26 +84,26 @@ static void test_determinism(void)
 			struct sampler *s3 = sampler_clone(s1);
 			for (size_t p = 0; p < NPIXELS; p++) {
 				uint32_t px = pixels[p][0], py = pixels[p][1];
-				sampler_pixel(s1, px, py, a);
-				sampler_pixel(s1, px + 1, py, other);  /* scratch now holds another pixel */
-				sampler_pixel(s1, px, py, b);
+				sampler_pixel(s1, px, py, 0, a);
+				sampler_pixel(s1, px + 1, py, 0, other);  /* scratch now holds another pixel */
+				sampler_pixel(s1, px, py, 0, b);
 				CHECK(memcmp(a, b, bytes) == 0);
-				sampler_pixel(s2, py, px, other);
-				sampler_pixel(s2, px, py, b);
+				sampler_pixel(s2, py, px, 0, other);
+				sampler_pixel(s2, px, py, 0, b);
 				CHECK(memcmp(a, b, bytes) == 0);
-				sampler_pixel(s3, px, py, c);
+				sampler_pixel(s3, px, py, 0, c);
 				CHECK(memcmp(a, c, bytes) == 0);
 				if (kinds[k] >= SAMPLE_RANDOM) {
-					sampler_pixel(s1, px + 1, py, other);
+					sampler_pixel(s1, px + 1, py, 0, other);
 					CHECK(memcmp(a, other, bytes) != 0);
-					sampler_pixel(s1, px, py + 1, other);
+					sampler_pixel(s1, px, py + 1, 0, other);
 					CHECK(memcmp(a, other, bytes) != 0);
 				}
 			}
 			if (kinds[k] >= SAMPLE_RANDOM) {
 				struct sampler *s4 = make(kinds[k], n, 8);
-				sampler_pixel(s1, 5, 5, a);
-				sampler_pixel(s4, 5, 5, b);
+				sampler_pixel(s1, 5, 5, 0, a);
+				sampler_pixel(s4, 5, 5, 0, b);
 				CHECK(memcmp(a, b, bytes) != 0);
 				sampler_free(s4);
 			}
@@ -135,7 +135,7 @@ static void test_grid(void)
 		struct sampler *sm = make(SAMPLE_GRID, n * n, 3);
 		char *seen = xcalloc((size_t)n * n, 1);
 		for (size_t p = 0; p < 3; p++) {
-			sampler_pixel(sm, pixels[p * 2][0], pixels[p * 2][1], xy);
+			sampler_pixel(sm, pixels[p * 2][0], pixels[p * 2][1], 0, xy);
 			for (int i = 0; i < n * n; i++) {
 				int a = -1, b = -1, nn = -1;
 				CHECK(sampler_grid_cell(sm, i, &a, &b, &nn));
@@ -190,7 +190,7 @@ static void test_jittered_square(void)
 		int *cells = xmalloc((size_t)count * sizeof *cells);
 		size_t npix = count > 5000 ? 2 : NPIXELS;
 		for (size_t p = 0; p < npix; p++) {
-			sampler_pixel(sm, pixels[p][0], pixels[p][1], xy);
+			sampler_pixel(sm, pixels[p][0], pixels[p][1], 0, xy);
 			memset(cells, 0, (size_t)count * sizeof *cells);
 			for (int i = 0; i < count; i++)
 				cells[(int)(xy[2 * i + 1] * n) * n + (int)(xy[2 * i] * n)]++;
@@ -242,7 +242,7 @@ static void test_jittered_any(void)
 		char *hit = xmalloc((size_t)count);
 		size_t npix = count > 5000 ? 2 : NPIXELS;
 		for (size_t p = 0; p < npix; p++) {
-			sampler_pixel(sm, pixels[p][0], pixels[p][1], xy);
+			sampler_pixel(sm, pixels[p][0], pixels[p][1], 0, xy);
 			memset(hit, 0, (size_t)count);
 			int bad = 0;
 			for (int i = 0; i < count; i++) {
@@ -277,9 +277,9 @@ static void test_jittered_any(void)
 		struct sampler *jit = make(SAMPLE_JITTERED, count, 5), *rnd = make(SAMPLE_RANDOM, count, 5);
 		double dj = 0, dr = 0;
 		for (uint32_t p = 0; p < 500; p++) {
-			sampler_pixel(jit, p, 1, xy);
+			sampler_pixel(jit, p, 1, 0, xy);
 			dj += l2_star2(xy, count);
-			sampler_pixel(rnd, p, 1, xy);
+			sampler_pixel(rnd, p, 1, 0, xy);
 			dr += l2_star2(xy, count);
 		}
 		double expect = (0.25 - 1.0 / 9) / count;
@@ -353,7 +353,7 @@ static void test_poisson(void)
 		double ideal = sqrt(2 / (sqrt(3.0) * m)), first = 0;
 		size_t npix = n > 5000 ? 2 : NPIXELS;
 		for (size_t p = 0; p < npix; p++) {
-			sampler_pixel(sm, pixels[p][0], pixels[p][1], xy);
+			sampler_pixel(sm, pixels[p][0], pixels[p][1], 0, xy);
 			double d = min_torus_dist(xy, m, ideal) / ideal;
 			if (p == 0) {
 				first = d;
@@ -376,7 +376,7 @@ static void test_random(void)
 	double xy[32], sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
 	int total = 0;
 	for (uint32_t p = 0; p < 4096; p++) {
-		sampler_pixel(sm, p % 64, p / 64, xy);
+		sampler_pixel(sm, p % 64, p / 64, 0, xy);
 		for (int i = 0; i < 16; i++, total++) {
 			double x = xy[2 * i] - 0.5, y = xy[2 * i + 1] - 0.5;
 			sx += x;
@@ -406,7 +406,7 @@ static double rms_error(enum sample_kind kind, int count, int prefix)
 	struct sampler *sm = make(kind, count, 42);
 	double *xy = xmalloc(2 * (size_t)count * sizeof *xy), se = 0;
 	for (uint32_t p = 0; p < 4096; p++) {
-		sampler_pixel(sm, p % 64, p / 64, xy);
+		sampler_pixel(sm, p % 64, p / 64, 0, xy);
 		double m = 0;
 		for (int i = 0; i < prefix; i++)
 			m += xy[2 * i] * xy[2 * i + 1];
