@@ -24,9 +24,9 @@ struct sampler {
 	enum sample_kind kind;
 	int count;
 	uint64_t seed;
+	bool progressive;      /* jittered for adaptive sampling: pixel_sobol */
 	int n;                 /* grid: count = n * n */
 	int rows, q, rem;      /* jittered: rem rows (spread evenly) of q + 1 cells, the rest of q */
-	uint32_t *order;       /* jittered scratch: the cells in the order of the samples */
 	uint32_t *xsub;        /* jittered scratch: a permutation of the rows (sub-columns) */
 	uint32_t *ysub[2];     /* jittered scratch: permutations of q and q + 1 (sub-rows) */
 	const uint64_t *tile;  /* poisson: 2 * count coordinates in units of 2^-64, maybe proto's */
@@ -176,7 +176,6 @@ static void poisson_tile(int count, uint64_t *tile)
 /* The jittered pattern's per-sampler scratch, sized by count, rows and q. */
 static void jittered_scratch(struct sampler *sm)
 {
-	sm->order = xmalloc(2 * (size_t)sm->count * sizeof *sm->order); /* the order, then scratch */
 	sm->xsub = xmalloc((size_t)sm->rows * sizeof *sm->xsub);
 	sm->ysub[0] = xmalloc((size_t)sm->q * sizeof *sm->ysub[0]);
 	sm->ysub[1] = xmalloc(((size_t)sm->q + 1) * sizeof *sm->ysub[1]);
@@ -201,6 +200,7 @@ struct sampler *sampler_new(const struct sampling *s)
 		break;
 	}
 	case SAMPLE_JITTERED: {
+		sm->progressive = s->target_error > 0;
 		/* rows = round(sqrt(N)) rows of q or q + 1 cells: the cells are near-square for
 		 * every N, and all of area exactly 1 / N */
 		int rows = (int)(sqrt((double)s->count) + 0.5);
@@ -236,7 +236,6 @@ void sampler_free(struct sampler *sm)
 {
 	if (!sm)
 		return;
-	free(sm->order);
 	free(sm->xsub);
 	free(sm->ysub[0]);
 	free(sm->ysub[1]);
@@ -267,70 +266,29 @@ static inline uint32_t row_start(const struct sampler *sm, uint32_t r)
  * the equal-weighted mean is unbiased. One point per cell; inside its cell the point takes
  * the sub-row given by a permutation of its place in the row, so that the y projection
  * holds exactly one point in each of N slices, and the sub-column given by a permutation
- * of its row, so that the x projection is stratified too (exactly so for square N). The
- * cells are dealt to the samples by checkerboard colour, each colour in random order
- * (deal_checkerboard), so that any prefix of the samples is spread.
+ * of its row, so that the x projection is stratified too (exactly so for square N). Only
+ * the whole set is stratified, not its prefixes: adaptive sampling, which stops on a
+ * prefix, takes pixel_sobol's points instead.
  * Why correlated permutations, one for all the cells of a row (or place), rather than
  * plain jittering or independent ones: at N = 16 and 256 they measured 20 to 40% lower
  * error on edges (a disc, half-planes) and 3 to 4 times lower on a smooth bump; only a
  * saddle such as x*y comes out a little worse than plain jittering (0.0164 against
  * 0.0147 RMS at N = 16). */
-/* Which sample each cell gets: the cells of one colour of a checkerboard (row + column
- * even) go to the even samples, the others to the odd ones, each colour in random order,
- * so that any prefix of the samples, where an adaptive pixel stops, is spread over the
- * pixel. */
-static void deal_checkerboard(struct sampler *sm, struct rng *r)
-{
-	uint32_t n = (uint32_t)sm->count, rows = (uint32_t)sm->rows;
-	uint32_t *cells = sm->order + n;   /* scratch: the cells of each colour, then shuffled */
-	uint32_t count[2] = { 0, 0 };
-	for (uint32_t row = 0, start = 0; row < rows; row++) {
-		uint32_t end = row_start(sm, row + 1);
-		for (uint32_t j = 0; j < end - start; j++)
-			count[(row + j) % 2]++;
-		start = end;
-	}
-	uint32_t *colour[2] = { cells, cells + count[0] };
-	uint32_t fill[2] = { 0, 0 };
-	for (uint32_t row = 0, start = 0; row < rows; row++) {
-		uint32_t end = row_start(sm, row + 1);
-		for (uint32_t j = 0; j < end - start; j++) {
-			int c = (int)((row + j) % 2);
-			colour[c][fill[c]++] = start + j;
-		}
-		start = end;
-	}
-	for (int c = 0; c < 2; c++)
-		for (uint32_t i = 0; i + 1 < count[c]; i++) { /* Fisher-Yates */
-			uint32_t j = i + rng_below(r, count[c] - i);
-			uint32_t t = colour[c][i];
-			colour[c][i] = colour[c][j];
-			colour[c][j] = t;
-		}
-	/* deal alternately; the larger colour's extra cells take the last samples */
-	uint32_t next = 0, taken[2] = { 0, 0 };
-	while (next < n)
-		for (int c = 0; c < 2 && next < n; c++)
-			if (taken[c] < count[c])
-				sm->order[colour[c][taken[c]++]] = next++;
-}
-
 static void pixel_jittered(struct sampler *sm, struct rng *r, double *xy)
 {
 	uint32_t n = (uint32_t)sm->count, rows = (uint32_t)sm->rows, q = (uint32_t)sm->q;
-	deal_checkerboard(sm, r);
 	shuffle(r, sm->xsub, rows, rows);
 	shuffle(r, sm->ysub[0], q, q);
 	if (sm->rem)
 		shuffle(r, sm->ysub[1], q + 1, q + 1);
 	double inv_x[2] = { 1.0 / ((double)q * rows), 1.0 / ((double)(q + 1) * rows) };
 	double inv_n = 1.0 / n;
-	/* cell k, counted row by row, becomes sample order[k] */
+	/* cell k, counted row by row, is sample k */
 	for (uint32_t row = 0, start = 0; row < rows; row++) {
 		uint32_t end = row_start(sm, row + 1);
 		uint32_t wide = end - start - q;   /* 1 for a row of q + 1 cells */
 		for (uint32_t j = 0; j < end - start; j++) {
-			uint32_t i = sm->order[start + j];
+			uint32_t i = start + j;
 			uint64_t bits = rng_next(r);
 			/* x = (j + (xsub + u) / rows) / cells_in_row over one denominator, so that
 			 * the stratum is an exact integer; the jitter keeps the point inside it */
@@ -362,6 +320,59 @@ static void pixel_poisson(const struct sampler *sm, struct rng *r, double *xy)
 	}
 }
 
+static inline uint32_t reverse32(uint32_t x)
+{
+	x = (x << 16) | (x >> 16);
+	x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);
+	x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);
+	x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
+	return ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
+}
+
+/* Sobol's second dimension: the index's bits times the Pascal matrix mod 2. */
+static inline uint32_t sobol_y(uint32_t i)
+{
+	uint32_t r = 0;
+	for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
+		if (i & 1)
+			r ^= v;
+	return r;
+}
+
+/* A nested uniform (Owen) scramble of a 32-bit fraction, by Laine and Karras's hash in
+ * reversed bit order (Burley, "Practical hash-based Owen scrambling", JCGT 2020): each
+ * bit is flipped by a function of the bits above it only. */
+static inline uint32_t owen_scramble(uint32_t x, uint32_t seed)
+{
+	x = reverse32(x);
+	x += seed;
+	x ^= x * 0x6c50b47cu;
+	x ^= x * 0xb82f1e52u;
+	x ^= x * 0xc7afe638u;
+	x ^= x * 0x8d22f6e6u;
+	return reverse32(x);
+}
+
+/* Jittered points for adaptive sampling, which stops a pixel at a power of two: the
+ * 2D Sobol sequence, whose first 2^m points for every m form a (0,m,2)-net (one point in
+ * every box 2^-a by 2^-(m-a) of the pixel), Owen-scrambled per pixel so that each point is
+ * uniform over its box (Owen, "Randomly permuted (t,m,s)-nets and (t,s)-sequences", 1995).
+ * The fixed pattern's prefixes are not stratified: on the Whitted scene at 160x120, pixels
+ * stopped at 16 of 256 cells measured an RMSE of 0.0179 (random points: 0.0176), these
+ * 0.0072, the same as 16 fixed jittered samples. At a power-of-two count the whole set
+ * is as good as pixel_jittered's; between them it is worse (0.0216 against 0.0189 at 5,
+ * 0.0021 against 0.0018 at 100), hence pixel_jittered for fixed counts. */
+static void pixel_sobol(const struct sampler *sm, struct rng *r, double *xy)
+{
+	uint64_t seeds = rng_next(r);
+	for (int i = 0; i < sm->count; i++) {
+		uint32_t x = owen_scramble(reverse32((uint32_t)i), (uint32_t)seeds);
+		uint32_t y = owen_scramble(sobol_y((uint32_t)i), (uint32_t)(seeds >> 32));
+		xy[2 * i] = jitter32(x);
+		xy[2 * i + 1] = jitter32(y);
+	}
+}
+
 void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, uint32_t replica, double *xy)
 {
 	/* the pattern is part of the key, so that patterns do not share numbers */
@@ -384,7 +395,10 @@ void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, uint32_t replic
 		}
 		break;
 	case SAMPLE_JITTERED:
-		pixel_jittered(sm, &r, xy);
+		if (sm->progressive)
+			pixel_sobol(sm, &r, xy);
+		else
+			pixel_jittered(sm, &r, xy);
 		break;
 	case SAMPLE_POISSON:
 		pixel_poisson(sm, &r, xy);

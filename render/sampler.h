@@ -13,7 +13,9 @@
  *   grid      ((a + 0.5) / n, (b + 0.5) / n) for count = n * n, row by row
  *   random    independent uniform points from the hash
  *   jittered  one point in each of count equal-area, near-square cells, for any count,
- *             with both projections stratified too (multi-jittered); random per pixel
+ *             with both projections stratified too (multi-jittered); random per pixel.
+ *             With a target_error (adaptive), an Owen-scrambled Sobol sequence instead,
+ *             whose first 2^m points are stratified for every m
  *   poisson   one Poisson-disc tile per count, mirrored and toroidally shifted per pixel */
 struct sampler;
 
@@ -35,8 +37,9 @@ void sampler_free(struct sampler *sm);
  * They depend only on the seed, the pattern and count, px, py, replica and i; not on the
  * thread, the sampler object, or earlier calls. Replica 0 is the image's; another
  * replica is an independent randomisation of the same pattern (the error estimate's),
- * the same points for grid and center. Except for grid, any prefix of the points is
- * spread over the whole pixel and unbiased, so an adaptive render may stop early.
+ * the same points for grid and center. For random, poisson and adaptive jittered, any
+ * prefix of the points is spread over the whole pixel and unbiased, so an adaptive render
+ * may stop early.
  * Writes 2 * count doubles and changes only sm's scratch. */
 void sampler_pixel(struct sampler *sm, uint32_t px, uint32_t py, uint32_t replica, double *xy);
 
