@@ -267,24 +267,9 @@ static inline bool box_hit(const struct bvh_node *n, struct vec3 o, struct vec3 
 	return tnear <= tfar;
 }
 
-static bool prim_hit(const struct scene *sc, uint32_t prim, const struct ray *r, struct hit *h)
-{
-	uint32_t i = prim_index(prim);
-	bool hit = prim_kind(prim) == PRIM_SPHERE ? ray_sphere(&sc->spheres[i], r, h)
-	                                          : ray_triangle(sc, &sc->triangles[i], r, h);
-	if (hit)
-		h->prim = prim;
-	return hit;
-}
-
 bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h)
 {
-	bool hit = false;
-	for (size_t i = 0; i < sc->nplanes; i++)
-		if (ray_plane(&sc->planes[i], r, h)) {
-			h->prim = prim_id(PRIM_PLANE, (uint32_t)i);
-			hit = true;
-		}
+	bool hit = planes_intersect(sc, r, h);
 	if (!b->nnodes)
 		return hit;
 	struct vec3 inv = v3(1 / r->d.x, 1 / r->d.y, 1 / r->d.z);
@@ -297,7 +282,7 @@ bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray
 		if (box_hit(n, r->o, inv, h->t)) {
 			if (n->count) {
 				for (uint32_t i = 0; i < n->count; i++)
-					hit |= prim_hit(sc, b->prims[n->index + i], r, h);
+					hit |= prim_intersect(sc, b->prims[n->index + i], r, h);
 			} else {
 				/* visit the child on the ray's near side first */
 				uint32_t first = cur + 1, second = n->index;
@@ -318,23 +303,10 @@ bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray
 	return hit;
 }
 
-static struct vec3 transmit_of(const struct scene *sc, uint32_t surface)
-{
-	return sc->materials[sc->surfaces[surface].material].transmit;
-}
-
 struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax)
 {
-	struct vec3 pass = v3s(1);
-	for (size_t i = 0; i < sc->nplanes; i++) {
-		struct hit h = { .t = tmax };
-		if (ray_plane(&sc->planes[i], r, &h)) {
-			pass = vmul(pass, transmit_of(sc, sc->planes[i].surface));
-			if (vzero(pass))
-				return pass;
-		}
-	}
-	if (!b->nnodes)
+	struct vec3 pass = planes_filter(sc, r, tmax);
+	if (vzero(pass) || !b->nnodes)
 		return pass;
 	struct vec3 inv = v3(1 / r->d.x, 1 / r->d.y, 1 / r->d.z);
 	uint32_t stack[2 * MAX_DEPTH + 8];
@@ -349,17 +321,7 @@ struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const
 				continue;
 			}
 			for (uint32_t i = 0; i < n->count; i++) {
-				uint32_t prim = b->prims[n->index + i], k = prim_index(prim);
-				if (prim_kind(prim) == PRIM_SPHERE) {
-					double t[2];
-					int crossings = ray_sphere_crossings(&sc->spheres[k], r, tmax, t);
-					for (int c = 0; c < crossings; c++)
-						pass = vmul(pass, transmit_of(sc, sc->spheres[k].surface));
-				} else {
-					struct hit h = { .t = tmax };
-					if (ray_triangle(sc, &sc->triangles[k], r, &h))
-						pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
-				}
+				pass = prim_filter(sc, b->prims[n->index + i], r, tmax, pass);
 				if (vzero(pass))
 					return pass;
 			}

@@ -7,7 +7,7 @@
 #include "scene.h"
 #include "shape.h"
 
-enum accel { ACCEL_BVH, ACCEL_NONE };
+enum accel { ACCEL_BVH, ACCEL_GRID, ACCEL_NONE }; /* ACCEL_GRID: see accel.h and grid.h */
 
 /* Builds over sc's spheres and triangles. ACCEL_NONE makes one leaf of everything:
  * brute force through the same code, for tests and the scaling study. */

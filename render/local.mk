@@ -2,7 +2,7 @@
 noinst_LIBRARIES += render/libscnrender.a
 render_libscnrender_a_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS) $(EXR_CFLAGS) $(ASSIMP_CFLAGS)
 render_libscnrender_a_SOURCES = \
-	%D%/bvh.c %D%/bvh.h \
+	%D%/accel.h %D%/bvh.c %D%/bvh.h %D%/grid.c %D%/grid.h \
 	%D%/camera.c %D%/camera.h \
 	%D%/render.c %D%/render.h \
 	%D%/scene.c %D%/scene.h \

@@ -91,6 +91,7 @@ struct sampling {
 };
 
 struct bvh;
+struct grid;
 
 struct scene {
 	struct camera camera;
@@ -115,7 +116,8 @@ struct scene {
 	struct sky sky;
 	struct sampling sampling;
 	int max_depth;
-	struct bvh *bvh;               /* built by bvh_build after lowering */
+	struct bvh *bvh;               /* built by accel_build after lowering: one of these two */
+	struct grid *grid;
 };
 
 void scene_free(struct scene *s);

@@ -205,3 +205,28 @@ struct vec3 offset_origin(const struct surface_point *sp, struct vec3 w)
 	o.z = off.z > 0 ? nextafter(o.z, INFINITY) : off.z < 0 ? nextafter(o.z, -INFINITY) : o.z;
 	return o;
 }
+
+bool planes_intersect(const struct scene *sc, const struct ray *r, struct hit *h)
+{
+	bool hit = false;
+	for (size_t i = 0; i < sc->nplanes; i++)
+		if (ray_plane(&sc->planes[i], r, h)) {
+			h->prim = prim_id(PRIM_PLANE, (uint32_t)i);
+			hit = true;
+		}
+	return hit;
+}
+
+struct vec3 planes_filter(const struct scene *sc, const struct ray *r, double tmax)
+{
+	struct vec3 pass = v3s(1);
+	for (size_t i = 0; i < sc->nplanes; i++) {
+		struct hit h = { .t = tmax };
+		if (ray_plane(&sc->planes[i], r, &h)) {
+			pass = vmul(pass, transmit_of(sc, sc->planes[i].surface));
+			if (vzero(pass))
+				return pass;
+		}
+	}
+	return pass;
+}

@@ -51,6 +51,46 @@ bool ray_triangle(const struct scene *sc, const struct triangle *tri, const stru
  * shadow filter, which counts each crossing. */
 int ray_sphere_crossings(const struct sphere *s, const struct ray *r, double tmax, double t[2]);
 
+/* The closest-hit test of one sphere or triangle by id; sets h->prim when it hits. */
+static inline bool prim_intersect(const struct scene *sc, uint32_t prim, const struct ray *r, struct hit *h)
+{
+	uint32_t i = prim_index(prim);
+	bool hit = prim_kind(prim) == PRIM_SPHERE ? ray_sphere(&sc->spheres[i], r, h)
+	                                          : ray_triangle(sc, &sc->triangles[i], r, h);
+	if (hit)
+		h->prim = prim;
+	return hit;
+}
+
+static inline struct vec3 transmit_of(const struct scene *sc, uint32_t surface)
+{
+	return sc->materials[sc->surfaces[surface].material].transmit;
+}
+
+/* pass times the k_t of one sphere or triangle (by id) for each time r crosses it in
+ * (0, tmax): the shadow filter's step. */
+static inline struct vec3 prim_filter(const struct scene *sc, uint32_t prim, const struct ray *r, double tmax,
+                                      struct vec3 pass)
+{
+	uint32_t k = prim_index(prim);
+	if (prim_kind(prim) == PRIM_SPHERE) {
+		double t[2];
+		int crossings = ray_sphere_crossings(&sc->spheres[k], r, tmax, t);
+		for (int c = 0; c < crossings; c++)
+			pass = vmul(pass, transmit_of(sc, sc->spheres[k].surface));
+	} else {
+		struct hit h = { .t = tmax };
+		if (ray_triangle(sc, &sc->triangles[k], r, &h))
+			pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
+	}
+	return pass;
+}
+
+/* The planes, which no accelerator holds: the closest hit among them (updating h, true
+ * when one is closer), and their shadow filter over (0, tmax). */
+bool planes_intersect(const struct scene *sc, const struct ray *r, struct hit *h);
+struct vec3 planes_filter(const struct scene *sc, const struct ray *r, double tmax);
+
 void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h, struct surface_point *sp);
 
 /* The origin for a ray leaving sp in direction w: moved off the surface by the hit

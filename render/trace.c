@@ -6,7 +6,7 @@
 
 #include <math.h>
 
-#include "bvh.h"
+#include "accel.h"
 
 struct vec3 sky_radiance(const struct sky *sky, struct vec3 d)
 {
@@ -133,7 +133,7 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 				shadow.d = vscale(to, 1 / vlen(to));
 			}
 			st->shadow++;
-			color = vmul(color, bvh_transmittance(sc->bvh, sc, &shadow, tmax));
+			color = vmul(color, accel_transmittance(sc, &shadow, tmax));
 			if (vzero(color))
 				continue;
 		}
@@ -151,7 +151,7 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
 {
 	struct hit h = { .t = INFINITY };
-	if (!bvh_intersect(sc->bvh, sc, r, &h))
+	if (!accel_intersect(sc, r, &h))
 		return sky_radiance(&sc->sky, r->d);
 	struct surface_point sp;
 	surface_at(sc, r, &h, &sp);

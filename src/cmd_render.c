@@ -9,7 +9,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "bvh.h"
+#include "accel.h"
 #include "cli.h"
 #include "diag.h"
 #include "image.h"
@@ -84,10 +84,12 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 		} else if (strcmp(opt, "--accel") == 0) {
 			if (strcmp(v, "bvh") == 0)
 				a->accel = ACCEL_BVH;
+			else if (strcmp(v, "grid") == 0)
+				a->accel = ACCEL_GRID;
 			else if (strcmp(v, "none") == 0)
 				a->accel = ACCEL_NONE;
 			else
-				return cli_usage_error(self, "unknown accelerator '%s' (bvh or none)", v);
+				return cli_usage_error(self, "unknown accelerator '%s' (bvh, grid or none)", v);
 		} else { /* --region */
 			char tail;
 			if (sscanf(v, "%ld,%ld,%ld,%ld%c", &a->x0, &a->y0, &a->x1, &a->y1, &tail) != 4)
@@ -134,15 +136,24 @@ static int override(const struct command *self, const struct render_args *a, str
 static void print_stats(const struct load_times *lt, const struct lower_times *wt, double bvh_s, double render_s,
                         double write_s, const struct scene *sc, const struct ray_stats *st)
 {
-	size_t nodes;
-	int depth;
-	bvh_shape(sc->bvh, &nodes, &depth);
 	fprintf(stderr,
-	        "time: parse %.3fs  check %.3fs  evaluate %.3fs  load meshes %.3fs  load images %.3fs  build bvh %.3fs"
+	        "time: parse %.3fs  check %.3fs  evaluate %.3fs  load meshes %.3fs  load images %.3fs  build %s %.3fs"
 	        "  render %.3fs  write %.3fs\n",
-	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, bvh_s, render_s, write_s);
-	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu lights, %zu materials; bvh %zu nodes, depth %d\n",
-	        sc->nspheres, sc->nplanes, sc->ntriangles, sc->nlights, sc->nmaterials, nodes, depth);
+	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, sc->grid ? "grid" : "bvh", bvh_s,
+	        render_s, write_s);
+	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu lights, %zu materials; ", sc->nspheres,
+	        sc->nplanes, sc->ntriangles, sc->nlights, sc->nmaterials);
+	if (sc->grid) {
+		int cells[3];
+		size_t refs;
+		grid_shape(sc->grid, cells, &refs);
+		fprintf(stderr, "grid %d x %d x %d cells, %zu references\n", cells[0], cells[1], cells[2], refs);
+	} else {
+		size_t nodes;
+		int depth;
+		bvh_shape(sc->bvh, &nodes, &depth);
+		fprintf(stderr, "bvh %zu nodes, depth %d\n", nodes, depth);
+	}
 	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
 	        (unsigned long long)st->camera, (unsigned long long)st->shadow, (unsigned long long)st->reflection,
 	        (unsigned long long)st->refraction,
@@ -182,7 +193,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	if (rc)
 		goto done;
 	double t0 = now();
-	sc.bvh = bvh_build(&sc, a.accel);
+	accel_build(&sc, a.accel);
 	double bvh_s = now() - t0;
 
 	struct render_options ro = { .threads = (int)a.threads, .x0 = 0, .y0 = 0,

@@ -17,7 +17,7 @@ static const struct command commands[] = {
 	  cmd_check },
 	{ "render",
 	  "scn render SCENE [-o OUT] [-W WIDTH] [-H HEIGHT] [-s SAMPLES] [-p PATTERN] [-d MAX_DEPTH]\n"
-	  "                  [-j THREADS] [--accel bvh|none] [--region X0,Y0,X1,Y1] [--seed N]\n"
+	  "                  [-j THREADS] [--accel bvh|grid|none] [--region X0,Y0,X1,Y1] [--seed N]\n"
 	  "                  [--bit-depth 8|16] [--float] [--stats] [--progress | --no-progress] [-q]",
 	  "Renders SCENE ('-' reads standard input) to OUT, by default the scene's name with .png.\n"
 	  "OUT's extension picks the format: .png (8-bit sRGB, or --bit-depth 16), .exr (linear\n"
@@ -27,7 +27,7 @@ static const struct command commands[] = {
 	  "  -s, -p        samples per pixel and their pattern (center grid random jittered poisson)\n"
 	  "  -d            max_depth, the bounce limit\n"
 	  "  -j            threads; 0 (the default) uses every core; the image does not depend on it\n"
-	  "  --accel       bvh (the default) or none (brute force)\n"
+	  "  --accel       bvh (the default), grid (uniform grid) or none (brute force)\n"
 	  "  --region      render only the pixels [X0,X1) x [Y0,Y1); the image is that rectangle\n"
 	  "  --seed        the sampling seed\n"
 	  "  --stats       time of each phase, rays by kind, non-finite radiance values\n"

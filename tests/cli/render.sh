@@ -66,6 +66,10 @@ same_bytes seed1.ppm seed1b.ppm "--seed 1 twice"
 render -s 4 -p grid --accel none -o none.ppm
 render -s 4 -p grid --accel bvh -o bvh.ppm
 same_bytes none.ppm bvh.ppm "--accel none against --accel bvh"
+render -s 4 -p grid --accel grid --stats -o grid.ppm
+same_bytes none.ppm grid.ppm "--accel none against --accel grid"
+expect_grep "$work/err" ' build grid [0-9.]+s .*'
+expect_grep "$work/err" '; grid [1-9][0-9]* x [1-9][0-9]* x [1-9][0-9]* cells, [1-9][0-9]* references$'
 
 # --- --region: exactly the crop of the full image ---
 header_len() {

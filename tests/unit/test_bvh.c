@@ -5,11 +5,12 @@
  * random, axis-aligned and +0/-0 directions) three answers must agree:
  *   ref   a plain loop over every primitive, with no bounding box at all;
  *   none  bvh_build(ACCEL_NONE): one leaf, through the traversal code;
- *   bvh   bvh_build(ACCEL_BVH).
+ *   bvh   bvh_build(ACCEL_BVH);
+ *   grid  grid_build (render/grid.c), walked cell by cell.
  *
  * Same t, bitwise or within a few ulps? Each primitive's t is a pure function of the
  * primitive and the ray, and the closest hit is a minimum over those values, which
- * involves no arithmetic; the BVH changes only the order of the tests and which
+ * involves no arithmetic; the BVH (or grid) changes only the order of the tests and which
  * primitives get tested. So when one primitive is closest by a clear margin all three
  * agree bitwise, and the test demands it. Order can matter only between candidates a
  * few ulps apart: ray_triangle's early-out compares tscaled against h->t * det, rounded
@@ -32,6 +33,7 @@
 
 #include "bvh.h"
 #include "check.h"
+#include "grid.h"
 #include "scene.h"
 #include "shape.h"
 #include "xalloc.h"
@@ -329,20 +331,62 @@ static bool agree(const struct scene *sc, const struct ray *r, double tmax, bool
 	return true;
 }
 
-static const char *const names[] = { "ref", "none", "bvh" };
+/* The answers compared: the reference, then each accelerator. */
+enum { REF, NONE, BVH, GRID, NANSWERS };
+static const char *const names[NANSWERS] = { "ref", "none", "bvh", "grid" };
 
-static void compare_ray(const struct scene *sc, const struct bvh *none, const struct bvh *bvh, const struct ray *r,
-                        double tmax, const char *what, struct tally *ty)
+struct accels {
+	struct bvh *none, *bvh;
+	struct grid *grid;
+};
+
+static void accels_build(const struct scene *sc, struct accels *a)
 {
-	struct hit h[3] = { { .t = tmax, .prim = UINT32_MAX }, { .t = tmax, .prim = UINT32_MAX },
-	                    { .t = tmax, .prim = UINT32_MAX } };
-	bool f[3];
-	f[0] = ref_intersect(sc, r, &h[0]);
-	f[1] = bvh_intersect(none, sc, r, &h[1]);
-	f[2] = bvh_intersect(bvh, sc, r, &h[2]);
+	a->none = bvh_build(sc, ACCEL_NONE);
+	a->bvh = bvh_build(sc, ACCEL_BVH);
+	a->grid = grid_build(sc);
+}
+
+static void accels_free(struct accels *a)
+{
+	bvh_free(a->none);
+	bvh_free(a->bvh);
+	grid_free(a->grid);
+}
+
+static bool answer_hit(const struct accels *a, int k, const struct scene *sc, const struct ray *r, struct hit *h)
+{
+	switch (k) {
+	case NONE: return bvh_intersect(a->none, sc, r, h);
+	case BVH: return bvh_intersect(a->bvh, sc, r, h);
+	case GRID: return grid_intersect(a->grid, sc, r, h);
+	default: return ref_intersect(sc, r, h);
+	}
+}
+
+static struct vec3 answer_filter(const struct accels *a, int k, const struct scene *sc, const struct ray *r,
+                                 double tmax)
+{
+	switch (k) {
+	case NONE: return bvh_transmittance(a->none, sc, r, tmax);
+	case BVH: return bvh_transmittance(a->bvh, sc, r, tmax);
+	case GRID: return grid_transmittance(a->grid, sc, r, tmax);
+	default: return ref_transmittance(sc, r, tmax);
+	}
+}
+
+static void compare_ray(const struct scene *sc, const struct accels *a, const struct ray *r, double tmax,
+                        const char *what, struct tally *ty)
+{
+	struct hit h[NANSWERS];
+	bool f[NANSWERS];
+	for (int k = 0; k < NANSWERS; k++) {
+		h[k] = (struct hit){ .t = tmax, .prim = UINT32_MAX };
+		f[k] = answer_hit(a, k, sc, r, &h[k]);
+	}
 	ty->rays++;
 	ty->hits += f[0];
-	for (int k = 1; k < 3; k++)
+	for (int k = 1; k < NANSWERS; k++)
 		if (!agree(sc, r, tmax, f[0], &h[0], f[k], &h[k], ty)) {
 			ty->fail++;
 			if (ty->printed++ < 10) {
@@ -356,10 +400,11 @@ static void compare_ray(const struct scene *sc, const struct bvh *none, const st
 	/* the shadow filter, over the segment and over the whole ray */
 	double ends[2] = { tmax, INFINITY };
 	for (int e = 0; e < 2; e++) {
-		struct vec3 t[3] = { ref_transmittance(sc, r, ends[e]), bvh_transmittance(none, sc, r, ends[e]),
-		                     bvh_transmittance(bvh, sc, r, ends[e]) };
+		struct vec3 t[NANSWERS];
+		for (int k = 0; k < NANSWERS; k++)
+			t[k] = answer_filter(a, k, sc, r, ends[e]);
 		ty->shadow++;
-		for (int k = 1; k < 3; k++) {
+		for (int k = 1; k < NANSWERS; k++) {
 			bool ok = t[k].x == t[0].x && t[k].y == t[0].y && fabs(t[k].z - t[0].z) <= 1e-13 * t[0].z;
 			if (!ok) {
 				ty->fail++;
@@ -428,16 +473,20 @@ static double lattice_coord(double size, double offset)
 static void compare_scene(const struct scene *sc, long nrays, double min_hits, bool lattice, double size,
                           struct vec3 offset, const char *what)
 {
-	struct bvh *none = bvh_build(sc, ACCEL_NONE);
-	struct bvh *bvh = bvh_build(sc, ACCEL_BVH);
+	struct accels a;
+	accels_build(sc, &a);
 	size_t nodes;
 	int depth;
-	bvh_shape(bvh, &nodes, &depth);
+	bvh_shape(a.bvh, &nodes, &depth);
 	size_t n = nprims(sc);
 	CHECK(depth <= 96);
 	CHECK(n == 0 || nodes <= 2 * n - 1);
-	bvh_shape(none, &nodes, &depth);
+	bvh_shape(a.none, &nodes, &depth);
 	CHECK(depth == 0 && nodes == (n > 0));
+	int cells[3];
+	size_t refs;
+	grid_shape(a.grid, cells, &refs);
+	CHECK(refs >= n);
 
 	struct vec3 lo, hi;
 	scene_bounds(sc, &lo, &hi);
@@ -479,19 +528,18 @@ static void compare_scene(const struct scene *sc, long nrays, double min_hits, b
 		}
 		}
 		double tmax = irand(3) ? INFINITY : extent * lrand(1e-3, 2);
-		compare_ray(sc, none, bvh, &r, tmax, what, &ty);
+		compare_ray(sc, &a, &r, tmax, what, &ty);
 	}
 	if (getenv("TEST_BVH_VERBOSE"))
 		fprintf(stderr, "%s: %ld rays, %ld hits; %ld exact ties named different primitives, %ld near ties "
 		        "(within %d ulps) differed\n", what, ty.rays, ty.hits, ty.ties, ty.near, NEAR_ULPS);
 	if (ty.fail)
-		fprintf(stderr, "%s: %ld of %ld comparisons failed\n", what, ty.fail, ty.rays * 6);
+		fprintf(stderr, "%s: %ld of %ld comparisons failed\n", what, ty.fail, ty.rays * 3 * (NANSWERS - 1));
 	CHECK(ty.fail == 0);
 	if (!(ty.hits >= min_hits * (double)ty.rays))
 		fprintf(stderr, "%s: only %ld of %ld rays hit\n", what, ty.hits, ty.rays);
 	CHECK(ty.hits >= min_hits * (double)ty.rays);
-	bvh_free(none);
-	bvh_free(bvh);
+	accels_free(&a);
 }
 
 /* ---- the tests ---- */
@@ -527,34 +575,27 @@ static void test_signed_zero_on_face(void)
 	/* edge A-B lies in the planes x = 0 and y = 0, the root box's lo faces */
 	add_triangle(&b, v3(0, 0, 0), v3(0, 0, 2), v3(1, 1, 1));
 	b.sc.triangles[0].surface = 0;
-	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH), *none = bvh_build(&b.sc, ACCEL_NONE);
+	struct accels acc;
+	accels_build(&b.sc, &acc);
 	static const double zeros[2] = { 0.0, -0.0 };
 	for (int sx = 0; sx < 2; sx++)
 		for (int sz = 0; sz < 2; sz++) {
-			/* in the plane x = 0, crossing the edge at (0, 0, 1) */
-			struct ray r = { v3(0, -1, 1), v3(zeros[sx], 1, zeros[sz]) };
-			struct hit h0 = { .t = INFINITY }, h1 = { .t = INFINITY }, h2 = { .t = INFINITY };
-			bool f0 = ref_intersect(&b.sc, &r, &h0);
-			bool f1 = bvh_intersect(none, &b.sc, &r, &h1);
-			bool f2 = bvh_intersect(bvh, &b.sc, &r, &h2);
-			if (!(f0 && f1 && f2 && h0.t == 1 && h1.t == 1 && h2.t == 1))
-				fprintf(stderr, "d = <%g, 1, %g>: ref %d t %g, none %d t %g, bvh %d t %g\n", zeros[sx], zeros[sz],
-				        f0, h0.t, f1, h1.t, f2, h2.t);
-			CHECK(f0 && h0.t == 1);
-			CHECK(f1 && h1.t == 1);
-			CHECK(f2 && h2.t == 1);
-			struct vec3 tr = bvh_transmittance(bvh, &b.sc, &r, INFINITY);
-			CHECK(vzero(tr));
-			/* the same from the other side: origin on the hi face y = 1, going -y */
-			r = (struct ray){ v3(0, 1, 1), v3(zeros[sx], -1, zeros[sz]) };
-			h0 = h1 = h2 = (struct hit){ .t = INFINITY };
-			f0 = ref_intersect(&b.sc, &r, &h0);
-			f1 = bvh_intersect(none, &b.sc, &r, &h1);
-			f2 = bvh_intersect(bvh, &b.sc, &r, &h2);
-			CHECK(f0 && f1 && f2 && h0.t == 1 && h1.t == 1 && h2.t == 1);
+			/* in the plane x = 0, crossing the edge at (0, 0, 1); then the same from the
+			 * other side: origin on the hi face y = 1, going -y */
+			struct ray rays[2] = { { v3(0, -1, 1), v3(zeros[sx], 1, zeros[sz]) },
+			                       { v3(0, 1, 1), v3(zeros[sx], -1, zeros[sz]) } };
+			for (int i = 0; i < 2; i++)
+				for (int k = 0; k < NANSWERS; k++) {
+					struct hit h = { .t = INFINITY };
+					bool f = answer_hit(&acc, k, &b.sc, &rays[i], &h);
+					if (!(f && h.t == 1))
+						fprintf(stderr, "d = <%g, %d, %g>: %s %d t %g\n", zeros[sx], i ? -1 : 1, zeros[sz],
+						        names[k], f, h.t);
+					CHECK(f && h.t == 1);
+					CHECK(vzero(answer_filter(&acc, k, &b.sc, &rays[i], INFINITY)));
+				}
 		}
-	bvh_free(bvh);
-	bvh_free(none);
+	accels_free(&acc);
 	scene_free(&b.sc);
 }
 
@@ -631,20 +672,23 @@ static void test_far_offset(void)
 		compare_scene(&b.sc, 3000, 0.3, false, 1, off, what);
 
 		/* aim at every sphere's centre from outside: each ray must hit something */
-		struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+		struct accels acc;
+		accels_build(&b.sc, &acc);
 		long missed = 0;
 		for (size_t i = 0; i < b.sc.nspheres; i++) {
 			struct vec3 c = b.sc.spheres[i].center;
 			struct ray r;
 			r.o = vadd(c, vscale(rand_unit(), 3));
 			r.d = vnorm(vsub(c, r.o));
-			struct hit h = { .t = INFINITY };
-			missed += !bvh_intersect(bvh, &b.sc, &r, &h);
+			for (int k = BVH; k <= GRID; k++) {
+				struct hit h = { .t = INFINITY };
+				missed += !answer_hit(&acc, k, &b.sc, &r, &h);
+			}
 		}
 		if (missed)
 			fprintf(stderr, "%s: %ld of %zu rays aimed at sphere centres missed\n", what, missed, b.sc.nspheres);
 		CHECK(missed == 0);
-		bvh_free(bvh);
+		accels_free(&acc);
 		scene_free(&b.sc);
 	}
 }
