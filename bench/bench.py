@@ -1,0 +1,286 @@
+"""bench.py: scn's benchmarks, run by bench/run (see it for the options).
+
+The scene table: scn and POV-Ray 3.7 on the same scenes, runs alternating scn/POV-Ray, the
+median of each; POV-Ray renders the scene `scn pov` writes, with the command line written at
+its top plus +WT2. The scaling study: render time against the number of spheres for each
+accelerator. The Embree table: bench/embree_compare. Scenes and meshes are generated into a
+work folder (default /tmp/scn-bench), never committed."""
+
+import argparse
+import os
+import re
+import shlex
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+import scenes  # noqa: E402
+
+SCN = os.path.join(TOP, "scn")
+THREADS = 2
+NONE_LIMIT = 60.0  # seconds: --accel none is not run where its render would take longer
+
+
+def log(*args):
+    print(*args, file=sys.stderr, flush=True)
+
+
+def timed(cmd, cwd=None):
+    """Runs cmd; returns (wall seconds, peak resident MB, stderr text). Fails loudly."""
+    with tempfile.NamedTemporaryFile("r", suffix=".time") as tf:
+        t0 = time.perf_counter()
+        p = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", tf.name] + cmd, cwd=cwd,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        wall = time.perf_counter() - t0
+        if p.returncode != 0:
+            sys.exit("bench: %s failed (status %d):\n%s" % (" ".join(cmd), p.returncode, p.stderr[-2000:]))
+        kb = int(tf.read().split()[-1])
+    return wall, kb / 1024, p.stderr
+
+
+STATS_TIME = re.compile(r"^time: parse ([0-9.]+)s  check ([0-9.]+)s  evaluate ([0-9.]+)s  load meshes ([0-9.]+)s"
+                        r"  load images ([0-9.]+)s  build \w+ ([0-9.]+)s  render ([0-9.]+)s  write ([0-9.]+)s$", re.M)
+STATS_RAYS = re.compile(r"^rays: +camera (\d+) +shadow (\d+) +reflection (\d+) +refraction (\d+) +total (\d+)$", re.M)
+
+
+def scn_stats(text):
+    """load, build, render and write seconds and the rays by kind from --stats."""
+    t, r = STATS_TIME.search(text), STATS_RAYS.search(text)
+    if not t or not r:
+        sys.exit("bench: no --stats in scn's output:\n" + text[-2000:])
+    t = [float(x) for x in t.groups()]
+    rays = dict(zip(["camera", "shadow", "reflection", "refraction", "total"], (int(x) for x in r.groups())))
+    return {"load": t[0] + t[1] + t[2] + t[3] + t[4], "build": t[5], "render": t[6], "write": t[7], "rays": rays}
+
+
+def scn_render(scene, out, accel="bvh"):
+    wall, mb, err = timed([SCN, "render", scene, "-o", out, "-j", str(THREADS), "--accel", accel, "--stats",
+                           "--no-progress"])
+    return {"wall": wall, "mb": mb, **scn_stats(err)}
+
+
+def pov_command(pov):
+    """The povray command line at the top of a .pov that scn pov wrote, with +WT2."""
+    with open(pov) as f:
+        for line in f:
+            if line.startswith("// Render: "):
+                return shlex.split(line[len("// Render: "):]) + ["+WT%d" % THREADS]
+    sys.exit("bench: %s has no '// Render:' line" % pov)
+
+
+def median_run(runs):
+    """The run whose wall time is the median (the lower middle for an even count)."""
+    ordered = sorted(runs, key=lambda r: r["wall"])
+    return ordered[(len(ordered) - 1) // 2]
+
+
+# ---- the scene table ----
+
+def make_scenes(work):
+    """[(name, description, scene path)]: the five scenes of the issue."""
+    bunny_ply = os.path.join(TOP, "examples", "bunny.ply")
+    big_ply = os.path.join(work, "bunny-1m.ply")
+    log("bench: writing scenes into", work)
+    scenes.headline(os.path.join(work, "headline.scn"))
+    scenes.field(os.path.join(work, "spheres-1e5.scn"), 100000)
+    scenes.field(os.path.join(work, "spheres-1e6.scn"), 1000000)
+    scenes.bunny(os.path.join(work, "bunny.scn"), bunny_ply, os.path.join(TOP, "examples", "bunny.scn"))
+    scenes.bunny_subdivided(bunny_ply, big_ply, 900000)
+    scenes.bunny(os.path.join(work, "bunny-1m.scn"), big_ply, os.path.join(TOP, "examples", "bunny.scn"))
+    return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
+            ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
+            ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
+            ("bunny", "examples/bunny.ply, 3674 triangles", "bunny.scn"),
+            ("bunny 1M", "bunny, midpoint-subdivided x4: 940544 triangles", "bunny-1m.scn")]
+
+
+def scene_settings(path):
+    """(width x height, samples, depth) as scn renders the scene (scn check --dump)."""
+    p = subprocess.run([SCN, "check", "--dump", path], capture_output=True, text=True)
+    text = p.stdout
+    res = re.search(r"resolution (\d+) (\d+)", text)
+    spp = re.search(r"samples count (\d+)", text)
+    depth = re.search(r"max_depth (\d+)", text)
+    return ("%sx%s" % res.groups() if res else "?", spp.group(1) if spp else "1", depth.group(1) if depth else "5")
+
+
+def scene_table(work, runs, table_scenes):
+    rows = []
+    for name, what, file in table_scenes:
+        scene = os.path.join(work, file)
+        pov = os.path.join(work, file[:-4] + ".pov")
+        subprocess.run([SCN, "pov", scene, "-o", pov], check=True, stderr=subprocess.DEVNULL)
+        cmd = pov_command(pov)
+        s_runs, p_runs = [], []
+        for i in range(runs):
+            log("bench: %s: run %d of %d: scn, then POV-Ray" % (name, i + 1, runs))
+            s_runs.append(scn_render(scene, os.path.join(work, file[:-4] + "-scn.png")))
+            wall, mb, _ = timed(cmd, cwd=work)
+            p_runs.append({"wall": wall, "mb": mb})
+        rows.append((name, what, scene_settings(scene), median_run(s_runs), median_run(p_runs),
+                     max(r["mb"] for r in s_runs), max(r["mb"] for r in p_runs), cmd))
+    return rows
+
+
+def print_scene_table(rows, runs):
+    print("scn against POV-Ray 3.7: wall time, median of %d alternating runs (scn, POV-Ray, scn, ...); "
+          "scn -j %d, POV-Ray +WT%d;" % (runs, THREADS, THREADS))
+    print("same resolution, samples per pixel and max_depth (scn pov writes both). scn samples 5 spp "
+          "jittered; POV-Ray cannot place them: its")
+    print("nearest is +A0.0 +AM2 +R2 -J, a 3x3 lattice per pixel whose edge samples are shared with "
+          "neighbours (about 4 new samples per pixel).")
+    print()
+    head = ("%-12s %-10s %3s %5s | %7s %7s %7s | %7s %7s | %6s %6s %7s" %
+            ("scene", "size", "spp", "depth", "scn s", "pov s", "pov/scn", "scn MB", "pov MB", "load", "build",
+             "render"))
+    print(head)
+    print("-" * len(head))
+    for name, what, (size, spp, depth), s, p, smb, pmb, _ in rows:
+        print("%-12s %-10s %3s %5s | %7.2f %7.2f %6.1fx | %7.0f %7.0f | %6.2f %6.2f %7.2f" %
+              (name, size, spp, depth, s["wall"], p["wall"], p["wall"] / s["wall"], smb, pmb, s["load"],
+               s["build"], s["render"]))
+    print()
+    print("scn's rays per second by kind during its render phase (Mrays/s; the median run's --stats):")
+    head = "%-12s %9s %9s %11s %11s %9s" % ("scene", "camera", "shadow", "reflection", "refraction", "total")
+    print(head)
+    print("-" * len(head))
+    for name, _, _, s, _, _, _, _ in rows:
+        r = s["rays"]
+        rate = lambda k: "%.2f" % (r[k] / s["render"] * 1e-6) if r[k] else "-"
+        print("%-12s %9s %9s %11s %11s %9s" % (name, rate("camera"), rate("shadow"), rate("reflection"),
+                                               rate("refraction"), rate("total")))
+    print()
+    print("scenes:")
+    for name, what, _, _, _, _, _, cmd in rows:
+        print("  %-12s %s" % (name, what))
+    print("POV-Ray's command for the headline: " + " ".join(rows[0][7]))
+
+
+# ---- the scaling study ----
+
+SCALING_N = [10, 100, 1000, 10000, 100000, 1000000]
+ACCELS = [("bvh", "#1f77b4", "solid"), ("grid", "#2ca02c", "solid"), ("none", "#d62728", "dashed")]
+ACCEL_NAMES = {"bvh": "--accel bvh", "grid": "--accel grid (uniform grid)", "none": "--accel none (brute force)"}
+
+
+def scaling(work, runs):
+    table = {}
+    none_last = None  # (n, render seconds) of the last none run
+    for n in SCALING_N:
+        scene = os.path.join(work, "field-%d.scn" % n)
+        scenes.field(scene, n)
+        for accel, _, _ in ACCELS:
+            if accel == "none" and none_last and none_last[1] * n / none_last[0] > NONE_LIMIT:
+                continue  # brute force grows as n: this one would pass the limit
+            ms = []
+            for i in range(runs):
+                log("bench: scaling: %d spheres, --accel %s, run %d of %d" % (n, accel, i + 1, runs))
+                ms.append(scn_render(scene, os.path.join(work, "field.png"), accel))
+            table[(n, accel)] = median_run(ms)
+            if accel == "none":
+                none_last = (n, table[(n, accel)]["render"])
+    return table
+
+
+def print_scaling(table, runs):
+    print("render time against the number of spheres: 640x480, 1 spp, 1 light, spheres at random in a box "
+          "filling 3%% of it; -j %d, median of %d" % (THREADS, runs))
+    print("(render: the render phase of --stats; setup: parse, evaluate and build the accelerator; "
+          "none is left out where it would pass %.0f s)" % NONE_LIMIT)
+    print("%9s | %s" % ("", " | ".join("%-16s" % ("--accel " + a) for a, _, _ in ACCELS)))
+    head = "%9s | %s" % ("spheres", " | ".join("%8s %7s" % ("render", "setup") for _ in ACCELS))
+    print(head)
+    print("-" * len(head))
+    for n in SCALING_N:
+        cells = []
+        for accel, _, _ in ACCELS:
+            m = table.get((n, accel))
+            cells.append("%8.3f %7.3f" % (m["render"], m["load"] + m["build"]) if m else "%8s %7s" % ("-", "-"))
+        print("%9d | %s" % (n, " | ".join(cells)))
+    b = lambda n: table[(n, "bvh")]["render"]
+    print("bvh render time, 1e6 spheres over 1e3: %.2fx" % (b(1000000) / b(1000)))
+
+
+def plot_scaling(table, svg):
+    subprocess.run(["make", "-s", "-C", TOP, "bench/plot_csv"], check=True)
+    lines = ["title scn render time against scene size (640x480, 1 spp, -j %d)" % THREADS,
+             "subtitle N spheres at random in a box; the render phase only (--stats), not parse or build",
+             "xlabel spheres", "ylabel render time (s)"]
+    for accel, color, style in ACCELS:
+        lines.append("series %s %s %s" % (color, style, ACCEL_NAMES[accel]))
+        lines += ["%d %.6f" % (n, table[(n, accel)]["render"]) for n in SCALING_N if (n, accel) in table]
+    p = subprocess.run([os.path.join(TOP, "bench", "plot_csv")], input="\n".join(lines) + "\n", text=True,
+                       capture_output=True, check=True)
+    with open(svg, "w") as f:
+        f.write(p.stdout)
+
+
+# ---- Embree ----
+
+def embree(work):
+    make = subprocess.run(["make", "-s", "-C", TOP, "bench/embree_compare"], capture_output=True, text=True)
+    if make.returncode != 0:
+        print("Embree comparison not run: bench/embree_compare did not build:\n" + make.stderr[-1500:])
+        return
+    print("raw traversal, scn's BVH against Embree 3 (rtcIntersect1, default build quality), the same "
+          "triangles and rays, median of 5 passes:")
+    sys.stdout.flush()
+    subprocess.run([os.path.join(TOP, "bench", "embree_compare"), os.path.join(work, "bunny.scn"),
+                    os.path.join(work, "bunny-1m.scn")], check=True)
+
+
+def converge():
+    log("bench: scn converge examples/whitted.scn (a few minutes)")
+    p = subprocess.run([SCN, "converge", os.path.join(TOP, "examples", "whitted.scn")], capture_output=True,
+                       text=True, check=True)
+    last = p.stdout.strip().splitlines()[-1]
+    print("scn converge examples/whitted.scn, last line: " + last)
+
+
+def main():
+    ap = argparse.ArgumentParser(prog="bench/run", description="scn's benchmarks")
+    ap.add_argument("--quick", action="store_true", help="one run of each, not three")
+    ap.add_argument("--runs", type=int, help="runs of each measurement (default 3, --quick 1)")
+    ap.add_argument("--full", action="store_true", help="also scn converge examples/whitted.scn (minutes)")
+    ap.add_argument("--only", choices=["table", "scaling", "embree"], action="append",
+                    help="run only these parts (repeatable); default: all three")
+    ap.add_argument("--work", default=os.environ.get("SCN_BENCH_DIR", "/tmp/scn-bench"),
+                    help="where scenes, meshes and images go (default /tmp/scn-bench)")
+    ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
+    a = ap.parse_args()
+    runs = a.runs or (1 if a.quick else 3)
+    parts = a.only or ["table", "scaling", "embree"]
+    os.makedirs(a.work, exist_ok=True)
+    subprocess.run(["make", "-s", "-C", TOP, "scn"], check=True)
+    with open("/proc/loadavg") as f:
+        print("load average at the start: " + " ".join(f.read().split()[:3]) + "; %d cores" % os.cpu_count())
+    t0 = time.time()
+    if "table" in parts or "embree" in parts:
+        table_scenes = make_scenes(a.work)
+    if "table" in parts:
+        print_scene_table(scene_table(a.work, runs, table_scenes), runs)
+        if a.full:
+            converge()
+        print()
+        sys.stdout.flush()
+    if "embree" in parts:
+        embree(a.work)
+        print()
+        sys.stdout.flush()
+    if "scaling" in parts:
+        table = scaling(a.work, runs)
+        print_scaling(table, runs)
+        plot_scaling(table, a.svg)
+        print("plot: " + os.path.relpath(a.svg))
+    with open("/proc/loadavg") as f:
+        print("load average at the end: %s; %.0f s in all" % (" ".join(f.read().split()[:3]), time.time() - t0))
+
+
+if __name__ == "__main__":
+    main()

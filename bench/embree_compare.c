@@ -1,0 +1,218 @@
+/* embree_compare.c: raw traversal speed of scn's BVH against Intel Embree 3 on the same
+ * triangles and the same rays, one ray at a time (bvh_intersect against rtcIntersect1),
+ * on 1 and 2 threads: coherent camera rays (the scene's pinhole camera, one ray through
+ * each pixel centre) and incoherent rays (random origins in the mesh's bounds, random
+ * directions). Only triangles count: planes and spheres are left out of both.
+ * bench/run builds it (make bench/embree_compare) where libembree-dev is installed; it is
+ * no part of the build or of make check. */
+#include "config.h"
+
+#include <embree3/rtcore.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "accel.h"
+#include "camera.h"
+#include "diag.h"
+#include "load.h"
+#include "lower.h"
+#include "random.h"
+#include "scene_desc.h"
+#include "xalloc.h"
+
+enum { REPEATS = 5 }; /* the median of this many passes over the rays */
+
+static double now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+struct job {
+	const struct scene *sc;
+	RTCScene rtc;
+	bool embree;
+	const struct ray *rays;
+	size_t first, count;
+	size_t hits;
+};
+
+static void *trace_some(void *arg)
+{
+	struct job *j = arg;
+	size_t hits = 0;
+	if (j->embree) {
+		struct RTCIntersectContext ctx;
+		rtcInitIntersectContext(&ctx);
+		for (size_t i = j->first; i < j->first + j->count; i++) {
+			const struct ray *r = &j->rays[i];
+			struct RTCRayHit rh = { 0 };
+			rh.ray.org_x = (float)r->o.x, rh.ray.org_y = (float)r->o.y, rh.ray.org_z = (float)r->o.z;
+			rh.ray.dir_x = (float)r->d.x, rh.ray.dir_y = (float)r->d.y, rh.ray.dir_z = (float)r->d.z;
+			rh.ray.tnear = 0;
+			rh.ray.tfar = INFINITY;
+			rh.ray.mask = ~0u;
+			rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+			rtcIntersect1(j->rtc, &ctx, &rh);
+			hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+		}
+	} else {
+		for (size_t i = j->first; i < j->first + j->count; i++) {
+			struct hit h = { .t = INFINITY };
+			hits += accel_intersect(j->sc, &j->rays[i], &h);
+		}
+	}
+	j->hits = hits;
+	return NULL;
+}
+
+static int by_value(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* Mrays/s of one engine on threads threads: the median of REPEATS passes. */
+static double measure(const struct scene *sc, RTCScene rtc, bool embree, const struct ray *rays, size_t n,
+                      int threads, size_t *hits)
+{
+	double rate[REPEATS];
+	for (int rep = 0; rep < REPEATS; rep++) {
+		struct job jobs[2];
+		pthread_t tid[2];
+		double t0 = now();
+		for (int k = 0; k < threads; k++) {
+			jobs[k] = (struct job){ sc, rtc, embree, rays, n * k / threads, n * (k + 1) / threads - n * k / threads, 0 };
+			if (pthread_create(&tid[k], NULL, trace_some, &jobs[k]) != 0) {
+				fprintf(stderr, "embree_compare: cannot start a thread\n");
+				exit(1);
+			}
+		}
+		*hits = 0;
+		for (int k = 0; k < threads; k++) {
+			pthread_join(tid[k], NULL);
+			*hits += jobs[k].hits;
+		}
+		rate[rep] = (double)n / (now() - t0) * 1e-6;
+	}
+	qsort(rate, REPEATS, sizeof rate[0], by_value);
+	return rate[REPEATS / 2];
+}
+
+static RTCScene embree_scene(RTCDevice dev, const struct scene *sc)
+{
+	RTCScene s = rtcNewScene(dev);
+	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+	float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+	                                   sc->nvertices);
+	unsigned *ix = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+	                                       sc->ntriangles);
+	if (!v || !ix) {
+		fprintf(stderr, "embree_compare: Embree could not allocate the mesh\n");
+		exit(1);
+	}
+	for (size_t i = 0; i < sc->nvertices; i++) {
+		v[3 * i] = (float)sc->vertices[i].x;
+		v[3 * i + 1] = (float)sc->vertices[i].y;
+		v[3 * i + 2] = (float)sc->vertices[i].z;
+	}
+	for (size_t i = 0; i < sc->ntriangles; i++)
+		for (int k = 0; k < 3; k++)
+			ix[3 * i + k] = sc->triangles[i].v[k];
+	rtcCommitGeometry(g);
+	rtcAttachGeometry(s, g);
+	rtcReleaseGeometry(g);
+	rtcCommitScene(s);
+	return s;
+}
+
+/* One ray through each pixel centre, and as many random rays from inside the bounds. */
+static struct ray *make_rays(const struct scene *sc, size_t *n)
+{
+	int w = sc->camera.width, h = sc->camera.height;
+	*n = (size_t)w * (size_t)h;
+	struct ray *rays = xcalloc(2 * *n, sizeof *rays);
+	for (int y = 0; y < h; y++)
+		for (int x = 0; x < w; x++)
+			rays[(size_t)y * (size_t)w + (size_t)x] = camera_ray(&sc->camera, (x + 0.5) / w, (y + 0.5) / h);
+	struct vec3 lo = v3s(INFINITY), hi = v3s(-INFINITY);
+	for (size_t i = 0; i < sc->nvertices; i++) {
+		lo = vmin(lo, sc->vertices[i]);
+		hi = vmax(hi, sc->vertices[i]);
+	}
+	rng_seed(12345);
+	for (size_t i = *n; i < 2 * *n; i++) {
+		rays[i].o = v3(urange(lo.x, hi.x), urange(lo.y, hi.y), urange(lo.z, hi.z));
+		rays[i].d = rand_unit();
+	}
+	return rays;
+}
+
+static int compare(RTCDevice dev, const char *path)
+{
+	struct diag d;
+	diag_init(&d, stderr);
+	struct scene_desc desc;
+	struct scene sc = { 0 };
+	struct lower_times lt;
+	bool ok = lang_load_scene(&d, path, &desc, NULL) == 0 && lang_lower(&d, &desc, &sc, &lt);
+	diag_flush(&d);
+	diag_fini(&d);
+	if (!ok || sc.ntriangles == 0) {
+		fprintf(stderr, "embree_compare: %s: %s\n", path, ok ? "no triangles" : "cannot load it");
+		return 1;
+	}
+	sc.nplanes = 0;
+	sc.nspheres = 0;
+	double t0 = now();
+	accel_build(&sc, ACCEL_BVH);
+	double scn_build = now() - t0;
+	t0 = now();
+	RTCScene rtc = embree_scene(dev, &sc);
+	double rtc_build = now() - t0;
+	size_t n;
+	struct ray *rays = make_rays(&sc, &n);
+
+	const char *base = strrchr(path, '/');
+	printf("%s: %zu triangles; build: scn %.3f s, Embree %.3f s\n", base ? base + 1 : path, sc.ntriangles,
+	       scn_build, rtc_build);
+	printf("  %-26s %7s %12s %14s %10s %16s\n", "rays", "threads", "scn Mrays/s", "Embree Mrays/s", "scn/Embree",
+	       "hits scn/Embree");
+	static const char *const kinds[2] = { "camera (coherent)", "random (incoherent)" };
+	for (int kind = 0; kind < 2; kind++)
+		for (int threads = 1; threads <= 2; threads++) {
+			size_t hs, he;
+			double s = measure(&sc, rtc, false, rays + kind * n, n, threads, &hs);
+			double e = measure(&sc, rtc, true, rays + kind * n, n, threads, &he);
+			printf("  %-26s %7d %12.2f %14.2f %9.0f%% %8zu/%zu\n", kinds[kind], threads, s, e, 100 * s / e, hs, he);
+		}
+	fflush(stdout);
+	free(rays);
+	rtcReleaseScene(rtc);
+	scene_free(&sc);
+	scene_desc_free(&desc);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	if (argc < 2) {
+		fprintf(stderr, "usage: embree_compare SCENE...\n");
+		return 2;
+	}
+	RTCDevice dev = rtcNewDevice(NULL);
+	if (!dev) {
+		fprintf(stderr, "embree_compare: rtcNewDevice failed\n");
+		return 1;
+	}
+	int rc = 0;
+	for (int i = 1; i < argc; i++)
+		rc |= compare(dev, argv[i]);
+	rtcReleaseDevice(dev);
+	return rc;
+}

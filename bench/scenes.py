@@ -1,0 +1,154 @@
+"""scenes.py: writes the benchmark scenes of bench/run into a build folder: small scn
+files whose loops make the objects, so that nothing big is committed."""
+
+import os
+import struct
+
+HEADLINE = """// headline: 1000 spheres over a checkered floor, a tenth mirror and a tenth glass
+camera {{ location <0, 7, -16>  look_at <0, 0.5, 0>  fov 60  resolution 1280, 1024 }}
+light  {{ position <-10, 14, -8> }}
+light  {{ position <12, 10, -4>  intensity 0.6 }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+samples {{ count 5  pattern jittered }}
+max_depth 8
+material floor  {{ diffuse checker(<0.9, 0.9, 0.9>, <0.25, 0.25, 0.3>, 1)  reflect 0.1 }}
+material mirror {{ diffuse 0.05  specular 0.8  shininess 200  reflect 0.85 }}
+material glass  {{ diffuse 0  specular 0.6  shininess 300  reflect 0.08  transmit 0.9  ior 1.5 }}
+material red    {{ diffuse <0.8, 0.2, 0.15>  specular 0.3  shininess 40 }}
+material green  {{ diffuse <0.2, 0.7, 0.25>  specular 0.3  shininess 40 }}
+material blue   {{ diffuse <0.2, 0.3, 0.8>  specular 0.3  shininess 40 }}
+material sand   {{ diffuse <0.8, 0.7, 0.45> }}
+plane {{ <0, 1, 0>, 0  material floor }}
+{loops}"""
+
+# n spheres at random in a box of side 2 s around <0, s, 0> above a floor, the radius
+# giving a fixed share of the box's volume: the picture looks alike for any n
+FIELD = """// {n} spheres at random in a box, each {share:g} of the box's volume in all
+camera {{ location <0, {cy:g}, {cz:g}>  look_at <0, {s:g}, 0>  fov 55  resolution {w}, {h} }}
+light  {{ position <{lx:g}, {ly:g}, {lz:g}> }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+material red   {{ diffuse <0.8, 0.2, 0.15>  specular 0.3  shininess 40 }}
+material green {{ diffuse <0.2, 0.7, 0.25>  specular 0.3  shininess 40 }}
+material blue  {{ diffuse <0.2, 0.3, 0.8>  specular 0.3  shininess 40 }}
+material sand  {{ diffuse <0.8, 0.7, 0.45> }}
+{loops}"""
+
+
+def sphere_loops(n, materials, centre, radius, seed=0):
+    """for-loops placing n spheres with rand(), split evenly over the materials; centre
+    is a format string of the index expression k, radius an scn expression."""
+    out, first = [], 0
+    for m, name in enumerate(materials):
+        count = n // len(materials) + (1 if m < n % len(materials) else 0)
+        if count == 0:
+            continue
+        k = f"(i + {first + seed})"
+        out.append(f"for i in 0 .. {count} {{ sphere {{ {centre.format(k=k)}, {radius.format(k=k)}"
+                   f"  material {name} }} }}\n")
+        first += count
+    return "".join(out)
+
+
+def headline(path):
+    centre = "<20 * rand(3 * {k}) - 10, 0.3 + 3.5 * rand(3 * {k} + 1), 20 * rand(3 * {k} + 2) - 8>"
+    radius = "0.25 + 0.35 * rand(7 * {k} + 5)"
+    mats = ["mirror"] + ["glass"] + ["red", "green", "blue", "sand"] * 2
+    write(path, HEADLINE.format(loops=sphere_loops(1000, mats, centre, radius)))
+
+
+def field(path, n, width=640, height=480):
+    s = 10.0
+    share = 0.03
+    # n spheres of radius r fill share of (2 s)^3
+    r = (share * (2 * s) ** 3 * 3 / (4 * 3.141592653589793 * n)) ** (1 / 3)
+    centre = f"<{2 * s} * rand(3 * {{k}}) - {s}, {2 * s} * rand(3 * {{k}} + 1), {2 * s} * rand(3 * {{k}} + 2) - {s}>"
+    write(path, FIELD.format(n=n, share=share, cy=1.6 * s, cz=-3.2 * s, s=s, w=width, h=height,
+                             lx=-2 * s, ly=4 * s, lz=-3 * s,
+                             loops=sphere_loops(n, ["red", "green", "blue", "sand"], centre, repr(r))))
+
+
+def bunny(path, ply, example):
+    """examples/bunny.scn with its mesh file replaced by ply (an absolute path)."""
+    with open(example) as f:
+        text = f.read()
+    write(path, text.replace('"bunny.ply"', '"' + os.path.abspath(ply) + '"'))
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+# ---- PLY: the bunny's binary little-endian float vertices and int triangle lists ----
+
+def read_ply(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    nv = nf = 0
+    for line in header:
+        w = line.split()
+        if w[:2] == ["element", "vertex"]:
+            nv = int(w[2])
+        elif w[:2] == ["element", "face"]:
+            nf = int(w[2])
+    verts = list(struct.iter_unpack("<fff", data[end:end + 12 * nv]))
+    faces, pos = [], end + 12 * nv
+    for _ in range(nf):
+        count = data[pos]
+        faces.append(struct.unpack_from("<%di" % count, data, pos + 1))
+        pos += 1 + 4 * count
+    return verts, faces
+
+
+def write_ply(path, verts, faces):
+    head = ("ply\nformat binary_little_endian 1.0\ncomment bench/scenes.py: midpoint subdivision\n"
+            f"element vertex {len(verts)}\nproperty float x\nproperty float y\nproperty float z\n"
+            f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+    body = bytearray(head.encode("ascii"))
+    for v in verts:
+        body += struct.pack("<fff", *v)
+    tri = struct.Struct("<Biii")
+    for a, b, c in faces:
+        body += tri.pack(3, a, b, c)
+    write_bytes(path, bytes(body))
+
+
+def write_bytes(path, data):
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    with open(path, "wb") as f:
+        f.write(data)
+
+
+def subdivide(verts, faces):
+    """Midpoint subdivision: each triangle into four, edges split at their midpoints."""
+    verts = list(verts)
+    mid = {}
+
+    def midpoint(a, b):
+        key = (a, b) if a < b else (b, a)
+        if key not in mid:
+            pa, pb = verts[a], verts[b]
+            verts.append(((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2))
+            mid[key] = len(verts) - 1
+        return mid[key]
+
+    out = []
+    for a, b, c in faces:
+        ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+    return verts, out
+
+
+def bunny_subdivided(src, dst, target):
+    """Writes src subdivided until it has at least target triangles (once: cached)."""
+    if os.path.exists(dst):
+        return
+    verts, faces = read_ply(src)
+    faces = [f for f in faces if len(f) == 3]
+    while len(faces) < target:
+        verts, faces = subdivide(verts, faces)
+    write_ply(dst + ".tmp", verts, faces)
+    os.replace(dst + ".tmp", dst)
