@@ -262,7 +262,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 	struct ast *at_look = NULL, *at_up = NULL, *at_loc = NULL;
 	char nb[32];
 	c->given = true;
-	c->span = s->u.stmt.kw_span;
+	c->span = c->resolution_span = s->u.stmt.kw_span;
 	struct ast_list *items = &s->u.stmt.block->items;
 	for (size_t i = 0; i < items->n; i++) {
 		struct ast *it = items->v[i];
@@ -277,6 +277,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 				           num_text(c->fov, nb));
 			break;
 		case KW_RESOLUTION:
+			c->resolution_span = it->span;
 			/* both, so that a bad width does not hide a bad height */
 			if (whole_of(ev, it->u.item.args.v[0], 1, 65536, "the width", &w) &
 			    whole_of(ev, it->u.item.args.v[1], 1, 65536, "the height", &h)) {

@@ -5,7 +5,8 @@
 #include "diag.h"
 #include "scene_desc.h"
 
-enum load_status { LOAD_OK = 0, LOAD_SCENE_ERROR = 1, LOAD_IO_ERROR = 3 };
+/* LOAD_TOO_BIG: the scene needs more memory than the machine has (lang_lower). */
+enum load_status { LOAD_OK = 0, LOAD_SCENE_ERROR = 1, LOAD_IO_ERROR = 3, LOAD_TOO_BIG = 4 };
 
 struct load_times {
 	double parse, check, eval;     /* seconds; parse includes reading the file */

@@ -20,5 +20,6 @@ lang_libscnlang_a_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
 
 # Allocation that never fails silently, shared by lang/ and render/.
 noinst_LIBRARIES += lang/libscnutil.a
-lang_libscnutil_a_SOURCES = %D%/xalloc.c %D%/xalloc.h
+lang_libscnutil_a_SOURCES = %D%/xalloc.c %D%/xalloc.h %D%/cleanup.c %D%/cleanup.h \
+	%D%/memory.c %D%/memory.h
 lang_libscnlang_a_SOURCES += %D%/suggest.c %D%/suggest.h

@@ -3,6 +3,7 @@
  * images loaded (each once). */
 #include "lower.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,7 @@
 #include "camera.h"
 #include "shape.h"
 #include "image.h"
+#include "memory.h"
 #include "mesh_import.h"
 #include "xalloc.h"
 
@@ -31,6 +33,7 @@ struct lowering {
 	struct mesh_cache_entry *mesh_cache;
 	size_t nmesh_cache, cap_mesh_cache;
 	double mesh_seconds;
+	bool too_big;                  /* a mesh file needs more memory than there is */
 };
 
 static double now(void)
@@ -167,21 +170,73 @@ static const struct mesh_data *mesh_file(struct lowering *lw, const struct mesh_
 	entry->path = m->path;
 	char err[512];
 	double t0 = now();
-	entry->ok = mesh_import(m->path, &entry->data, err, sizeof err) == 0;
+	int rc = mesh_import(m->path, &entry->data, err, sizeof err);
+	entry->ok = rc == 0;
+	lw->too_big = lw->too_big || rc == ENOMEM;
 	lw->mesh_seconds += now() - t0;
 	if (!entry->ok)
 		diag_error(lw->diag, m->file_span, "%s", err);
 	return entry->ok ? &entry->data : NULL;
 }
 
-static void lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at)
+/* The data of mesh object o: its file's (read once) or its inline arrays in *inline_data;
+ * NULL after an error. */
+static const struct mesh_data *mesh_data_of(struct lowering *lw, const struct object_desc *o,
+                                            struct mesh_data *inline_data)
 {
 	const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
-	struct mesh_data inline_data = {
+	*inline_data = (struct mesh_data){
 		.vertices = m->vertices, .nvertices = m->nvertices, .normals = m->normals,
 		.nnormals = m->nnormals, .faces = m->faces, .nfaces = m->nfaces,
 	};
-	const struct mesh_data *data = m->file ? mesh_file(lw, m) : &inline_data;
+	return m->file ? mesh_file(lw, m) : inline_data;
+}
+
+/* Whether the render fits the machine's memory: other_bytes, the objects, and each mesh
+ * object's triangles and vertices (every file read here, once), with the BVH over them,
+ * counted before any of it is built. If not, an error at the mesh object where the count
+ * passes what there is (or about the scene, when it is not a mesh), saying what the whole
+ * needs and what there is. */
+static bool scene_fits(struct lowering *lw, int64_t other_bytes)
+{
+	const struct scene_desc *desc = lw->desc;
+	const char *limit_is;
+	uint64_t limit = memory_available(&limit_is);
+	uint64_t total = (uint64_t)other_bytes + scene_bytes(desc->nobjects, 0);
+	const struct object_desc *at = NULL;
+	size_t triangles = 0, vertices = 0;
+	for (size_t i = 0; i < desc->nobjects; i++) {
+		const struct object_desc *o = &desc->objects[i];
+		struct mesh_data inline_data;
+		const struct mesh_data *data = o->kind == OBJ_MESH ? mesh_data_of(lw, o, &inline_data) : NULL;
+		if (!data)
+			continue;
+		triangles += data->nfaces;
+		vertices += data->nvertices;
+		total = (uint64_t)other_bytes + scene_bytes(desc->nobjects + triangles, vertices);
+		if (!at && total > limit)
+			at = o;
+	}
+	if (lw->too_big)
+		return false;
+	if (total <= limit)
+		return true;
+	char need[32], have[32];
+	memory_text(total, need, sizeof need);
+	memory_text(limit, have, sizeof have);
+	if (at)
+		diag_error(lw->diag, at->span, "the render needs %s for %zu triangles, their BVH and the image; %s %s "
+		           "(this mesh passes it)", need, triangles, limit_is, have);
+	else
+		diag_plain(lw->diag, DIAG_ERROR, "the render needs %s for %zu objects, their BVH and the image; %s %s",
+		           need, desc->nobjects, limit_is, have);
+	return false;
+}
+
+static void lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at)
+{
+	struct mesh_data inline_data;
+	const struct mesh_data *data = mesh_data_of(lw, o, &inline_data);
 	if (!data)
 		return;
 	struct scene *sc = lw->sc;
@@ -348,12 +403,14 @@ static void warn_enclosed_lights(struct lowering *lw)
 	}
 }
 
-bool lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out, struct lower_times *times)
+enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out,
+                            struct lower_times *times, int64_t other_bytes)
 {
 	memset(out, 0, sizeof *out);
 	memset(times, 0, sizeof *times);
 	struct lowering lw = { .diag = d, .desc = desc, .sc = out, .default_material = -1 };
 	int errors = d->errors;
+	bool too_big = other_bytes >= 0 && !scene_fits(&lw, other_bytes);
 
 	const struct camera_desc *c = &desc->camera;
 	camera_setup(&out->camera, v3a(c->location), v3a(c->look_at), v3a(c->up), c->fov, c->width, c->height);
@@ -371,7 +428,7 @@ bool lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out
 	lw.material_map = xmalloc((desc->nmaterials ? desc->nmaterials : 1) * sizeof *lw.material_map);
 	for (size_t i = 0; i < desc->nmaterials; i++)
 		lw.material_map[i] = -1;
-	for (size_t i = 0; i < desc->nobjects; i++)
+	for (size_t i = 0; i < desc->nobjects && !too_big; i++)
 		lower_object(&lw, &desc->objects[i]);
 	times->load_meshes = lw.mesh_seconds;
 	double t0 = now();
@@ -393,7 +450,7 @@ bool lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out
 	free(lw.material_map);
 	if (out->nspheres + out->ntriangles + out->nplanes >= (1u << PRIM_KIND_SHIFT)) {
 		diag_plain(d, DIAG_ERROR, "the scene has more than 2^30 primitives");
-		return false;
+		return LOAD_SCENE_ERROR;
 	}
-	return d->errors == errors;
+	return too_big || lw.too_big ? LOAD_TOO_BIG : d->errors == errors ? LOAD_OK : LOAD_SCENE_ERROR;
 }

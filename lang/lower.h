@@ -3,7 +3,10 @@
 #ifndef SCN_LOWER_H
 #define SCN_LOWER_H
 
+#include <stdint.h>
+
 #include "diag.h"
+#include "load.h"
 #include "scene.h"
 #include "scene_desc.h"
 
@@ -15,8 +18,14 @@ struct lower_times {
  * that objects name (each read once), the rays the materials and lights can need.
  * Transforms are baked into world-space geometry; the BVH is left to the caller
  * (scn check lowers without one). Reports what it cannot load, and warnings, to d (at
- * the place in the scene) and returns false after an error; out is always
- * scene_free-able. */
-bool lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out, struct lower_times *times);
+ * the place in the scene) and returns LOAD_SCENE_ERROR after an error; out is always
+ * scene_free-able.
+ * other_bytes is what the run will hold besides the scene (its images): with it, the
+ * scene's objects and then each mesh as it is read are counted, with their BVH, against
+ * the memory the machine has (memory.h), and the first mesh that passes it is an error
+ * there, the status LOAD_TOO_BIG; nothing is built for it. Negative: no such count (scn
+ * check and scn pov build no BVH and render nothing). */
+enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out,
+                            struct lower_times *times, int64_t other_bytes);
 
 #endif

@@ -17,6 +17,7 @@ struct camera_desc {
 	int width, height;
 	bool given;                    /* false: the defaults of LANGUAGE.md */
 	struct span span;
+	struct span resolution_span;   /* the resolution attribute, or span when not given */
 };
 
 struct light_desc {

@@ -1,21 +1,41 @@
 /* xalloc.c: allocation that never returns NULL. Callers never check; running out of
- * memory ends the program with exit status 4, as LANGUAGE.md section 8 specifies. */
+ * memory ends the program with exit status 4, as LANGUAGE.md section 8 specifies, after
+ * removing the temporary files of unfinished output (cleanup.h). */
 #include "xalloc.h"
 
+#include "cleanup.h"
+
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+/* SCN_ALLOC_LIMIT=BYTES makes every allocation larger than BYTES fail as if memory had
+ * run out: the test suite's way to reach this path in a render, which the up-front
+ * memory checks (memory.h) otherwise keep ulimit from reaching. Read at the first
+ * allocation, which comes before any thread starts. */
+static size_t alloc_limit(void)
+{
+	static size_t limit;
+	static bool known;
+	if (!known) {
+		const char *s = getenv("SCN_ALLOC_LIMIT");
+		limit = s && *s ? (size_t)strtoull(s, NULL, 10) : SIZE_MAX;
+		known = true;
+	}
+	return limit;
+}
+
 static void out_of_memory(size_t size)
 {
 	fprintf(stderr, "scn: out of memory (requesting %zu bytes)\n", size);
-	exit(4);
+	cleanup_exit(4);
 }
 
 void *xmalloc(size_t size)
 {
-	void *p = malloc(size ? size : 1);
+	void *p = size <= alloc_limit() ? malloc(size ? size : 1) : NULL;
 	if (!p)
 		out_of_memory(size);
 	return p;
@@ -25,7 +45,7 @@ void *xcalloc(size_t count, size_t size)
 {
 	if (size && count > SIZE_MAX / size)
 		out_of_memory(SIZE_MAX);
-	void *p = calloc(count ? count : 1, size ? size : 1);
+	void *p = count * size <= alloc_limit() ? calloc(count ? count : 1, size ? size : 1) : NULL;
 	if (!p)
 		out_of_memory(count * size);
 	return p;
@@ -33,7 +53,7 @@ void *xcalloc(size_t count, size_t size)
 
 void *xrealloc(void *ptr, size_t size)
 {
-	void *p = realloc(ptr, size ? size : 1);
+	void *p = size <= alloc_limit() ? realloc(ptr, size ? size : 1) : NULL;
 	if (!p)
 		out_of_memory(size);
 	return p;

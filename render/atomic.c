@@ -1,6 +1,7 @@
 /* atomic.c: the temporary-file-and-rename protocol shared by the image and POV-Ray
  * writers: an interrupted or failed write never leaves a truncated file or destroys the
- * one that was there. */
+ * one that was there. A signal or running out of memory meanwhile removes the temporary
+ * file too (cleanup.h). */
 #include "atomic.h"
 
 #include <errno.h>
@@ -8,8 +9,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "xalloc.h"
 
 /* The name is short and fixed apart from the counter, so that a long final name cannot
@@ -19,20 +22,30 @@ int atomic_open(const char *path, char **tmp, char *err, size_t errlen)
 {
 	if (errlen)
 		err[0] = '\0';
+	struct stat st;
+	if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {  /* known now, not at the rename */
+		*tmp = NULL;
+		snprintf(err, errlen, "cannot write '%s': %s", path, strerror(EISDIR));
+		return -EISDIR;
+	}
 	static unsigned counter;       /* files are written from one thread */
 	const char *slash = strrchr(path, '/');
 	int dirlen = slash ? (int)(slash - path + 1) : 0;
 	size_t size = (size_t)dirlen + 64;
 	*tmp = xmalloc(size);
+	int e = EEXIST;
 	for (int attempt = 0; attempt < 100; attempt++) {
 		snprintf(*tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
+		/* registered before it exists, so that no signal finds it made and not known */
+		cleanup_register(*tmp, false);
 		int fd = open(*tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
 		if (fd >= 0)
 			return fd;
-		if (errno != EEXIST)
+		e = errno;
+		cleanup_unregister(*tmp);
+		if (e != EEXIST)
 			break;
 	}
-	int e = errno;
 	free(*tmp);
 	*tmp = NULL;
 	snprintf(err, errlen, "cannot write '%s': %s", path, strerror(e));
@@ -55,6 +68,7 @@ int atomic_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t
 			snprintf(err, errlen, "cannot write '%s': %s", path, strerror(rc));
 		unlink(tmp);
 	}
+	cleanup_unregister(tmp);
 	free(tmp);
 	return rc;
 }

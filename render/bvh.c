@@ -227,6 +227,11 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	return b;
 }
 
+uint64_t bvh_bytes(uint64_t n)
+{
+	return n * (sizeof(struct build_ref) + sizeof(uint32_t) + 4 * sizeof(struct bvh_node));
+}
+
 void bvh_free(struct bvh *b)
 {
 	if (!b)

@@ -13,6 +13,9 @@ enum accel { ACCEL_BVH, ACCEL_GRID, ACCEL_NONE }; /* ACCEL_GRID: see accel.h and
  * brute force through the same code, for tests and the scaling study. */
 struct bvh *bvh_build(const struct scene *sc, enum accel kind);
 void bvh_free(struct bvh *b);
+/* The most bytes bvh_build holds at once for n primitives (its build records, and the
+ * nodes of a tree with one primitive a leaf, grown by doubling). */
+uint64_t bvh_bytes(uint64_t n);
 
 /* Closest hit with 0 < t < h->t over every primitive, planes included; updates h. */
 bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h);

@@ -118,6 +118,14 @@ static size_t count_refs(const struct grid *g, const struct box *boxes, size_t n
 	return total;
 }
 
+uint64_t grid_bytes(uint64_t n)
+{
+	double side = 3 * cbrt((double)n) + 1;
+	double cells = fmin(side * side * side, MAX_CELLS) + 1;
+	return (uint64_t)cells * 2 * sizeof(uint32_t) + n * sizeof(struct box) +
+	       (MAX_REFS_PER_PRIM * n + ((uint64_t)1 << 20)) * sizeof(uint32_t);
+}
+
 struct grid *grid_build(const struct scene *sc)
 {
 	struct grid *g = xcalloc(1, sizeof *g);

@@ -8,6 +8,9 @@
 
 struct grid *grid_build(const struct scene *sc);
 void grid_free(struct grid *g);
+/* The most bytes grid_build holds at once for n primitives: its cells at the most its
+ * resolution rule and cap allow, the boxes, and the references at their cap. */
+uint64_t grid_bytes(uint64_t n);
 
 /* Closest hit with 0 < t < h->t over every primitive, planes included; updates h. */
 bool grid_intersect(const struct grid *g, const struct scene *sc, const struct ray *r, struct hit *h);

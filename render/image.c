@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "atomic.h"
+#include "memory.h"
 #include "xalloc.h"
 
 struct image *image_new(int width, int height)
@@ -24,6 +25,11 @@ struct image *image_new(int width, int height)
 	img->height = height;
 	img->rgb = xcalloc((size_t)width * (size_t)height * 3, sizeof *img->rgb);
 	return img;
+}
+
+uint64_t image_bytes(int64_t width, int64_t height)
+{
+	return sizeof(struct image) + (uint64_t)width * (uint64_t)height * 3 * sizeof(float);
 }
 
 void image_free(struct image *img)
@@ -96,7 +102,14 @@ int image_alloc_for_read(int64_t width, int64_t height, const char *path, struct
                          char *err, size_t errlen)
 {
 	*out = NULL;
-	if (width > 0 && height > 0 && width <= INT32_MAX && height <= INT32_MAX)
+	bool sized = width > 0 && height > 0 && width <= INT32_MAX && height <= INT32_MAX;
+	char need[128];
+	if (sized && width * height <= IMAGE_MAX_PIXELS && !memory_fits(image_bytes(width, height), need, sizeof need)) {
+		snprintf(err, errlen, "cannot read '%s': its %lld x %lld image %s", path, (long long)width,
+		         (long long)height, need);
+		return ENOMEM;
+	}
+	if (sized)
 		*out = image_new((int)width, (int)height);
 	if (*out)
 		return 0;
@@ -126,37 +139,48 @@ int image_write_all(int fd, const void *buf, size_t n)
 	return 0;
 }
 
-int image_write(const struct image *img, const char *path, const struct image_write_options *opt,
-                char *err, size_t errlen)
+int image_file_create(struct image_file *f, const char *path, const struct image_write_options *opt,
+                      char *err, size_t errlen)
 {
-	struct image_write_options o = opt ? *opt : (struct image_write_options){ 8, false };
-	int format = image_format_of(path);
-	if (format < 0) {
+	*f = (struct image_file){ .path = path, .format = image_format_of(path), .fd = -1,
+	                          .opt = opt ? *opt : (struct image_write_options){ 8, false } };
+	if (f->format < 0) {
 		snprintf(err, errlen, "cannot write '%s': unknown image format (use .png, .exr or .ppm)", path);
 		return EINVAL;
 	}
-	if (format != IMAGE_EXR && o.bit_depth != 8 && o.bit_depth != 16) {
-		snprintf(err, errlen, "cannot write '%s': bit depth %d (must be 8 or 16)", path, o.bit_depth);
+	if (f->format != IMAGE_EXR && f->opt.bit_depth != 8 && f->opt.bit_depth != 16) {
+		snprintf(err, errlen, "cannot write '%s': bit depth %d (must be 8 or 16)", path, f->opt.bit_depth);
 		return EINVAL;
 	}
-	if (!img || img->width <= 0 || img->height <= 0 ||
-	    (int64_t)img->width * img->height > IMAGE_MAX_PIXELS) {
-		snprintf(err, errlen, "cannot write '%s': invalid image", path);
-		return EINVAL;
-	}
+	f->fd = atomic_open(path, &f->tmp, err, errlen);
+	return f->fd < 0 ? -f->fd : 0;
+}
 
-	char *tmp;
-	int fd = atomic_open(path, &tmp, err, errlen);
-	if (fd < 0)
-		return -fd;
-	int rc;
-	switch ((enum image_format)format) {
-	case IMAGE_PNG: rc = image_png_write(img, fd, path, o.bit_depth, err, errlen); break;
-	case IMAGE_EXR: rc = image_exr_write(img, fd, path, o.float32, err, errlen); break;
-	case IMAGE_PPM: rc = image_ppm_write(img, fd, path, o.bit_depth, err, errlen); break;
-	default: rc = EINVAL; break;
-	}
-	return atomic_finish(fd, tmp, path, rc, err, errlen);
+int image_file_commit(struct image_file *f, const struct image *img, char *err, size_t errlen)
+{
+	int rc = EINVAL;
+	if (!img)
+		snprintf(err, errlen, "cannot write '%s': no image", f->path);
+	else if (img->width <= 0 || img->height <= 0 || (int64_t)img->width * img->height > IMAGE_MAX_PIXELS)
+		snprintf(err, errlen, "cannot write '%s': invalid image", f->path);
+	else if (f->format == IMAGE_PNG)
+		rc = image_png_write(img, f->fd, f->path, f->opt.bit_depth, err, errlen);
+	else if (f->format == IMAGE_EXR)
+		rc = image_exr_write(img, f->fd, f->path, f->opt.float32, err, errlen);
+	else
+		rc = image_ppm_write(img, f->fd, f->path, f->opt.bit_depth, err, errlen);
+	rc = atomic_finish(f->fd, f->tmp, f->path, rc, err, errlen);
+	f->fd = -1;
+	f->tmp = NULL;
+	return rc;
+}
+
+int image_write(const struct image *img, const char *path, const struct image_write_options *opt,
+                char *err, size_t errlen)
+{
+	struct image_file f;
+	int rc = image_file_create(&f, path, opt, err, errlen);
+	return rc ? rc : image_file_commit(&f, img, err, errlen);
 }
 
 int image_read(const char *path, struct image **out, char *err, size_t errlen)

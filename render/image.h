@@ -21,6 +21,8 @@ struct image {
  * would have more than IMAGE_MAX_PIXELS pixels. The caller frees it with image_free. */
 struct image *image_new(int width, int height);
 void image_free(struct image *img);
+/* What image_new allocates for width x height pixels. */
+uint64_t image_bytes(int64_t width, int64_t height);
 
 /* ORDER IMAGE_FORMAT: image.c's format_ext follows this order. */
 enum image_format { IMAGE_PNG, IMAGE_EXR, IMAGE_PPM };
@@ -32,6 +34,27 @@ struct image_write_options {
 	int bit_depth;                 /* 8 or 16: PNG and PPM (EXR ignores it) */
 	bool float32;                  /* EXR: 32-bit float instead of half */
 };
+
+/* An image file being written: created before the image exists (image_file_create),
+ * so that an unwritable place is found before the work, and filled once it does
+ * (image_file_commit). */
+struct image_file {
+	const char *path;
+	int format, fd;
+	char *tmp;                     /* the temporary file, renamed over path at the end */
+	struct image_write_options opt;
+};
+
+/* Checks path's format and the options (NULL: 8-bit, half) and creates the temporary
+ * file in path's directory. Returns 0, or an errno code with a message naming path in
+ * err (EINVAL: bad options or unknown extension; otherwise the OS's reason), and there
+ * is then nothing to commit. */
+int image_file_create(struct image_file *f, const char *path, const struct image_write_options *opt,
+                      char *err, size_t errlen);
+/* Writes img into f's temporary file and renames it over f's path; with img NULL, when
+ * the image could not be made, only removes the temporary file. Either way f is done.
+ * Returns 0, or an errno code with a message naming the path in err. */
+int image_file_commit(struct image_file *f, const struct image *img, char *err, size_t errlen);
 
 /* Writes img to path in the format of its extension (options NULL: 8-bit, half).
  * The bytes go to a temporary file in path's directory that is then renamed over
@@ -90,8 +113,9 @@ int image_write_all(int fd, const void *buf, size_t n);
 /* A table of maxval + 1 linear values, entry v = decode(v / maxval) through the sRGB
  * curve (gamma 0) or the power law x^(1/gamma) of a PNG gAMA value. Freed with free(). */
 float *image_decode_table(unsigned maxval, double gamma);
-/* image_new for a size read from a file's header; if it refuses, EINVAL (no pixels)
- * or EFBIG (too many) with the message naming path in err. */
+/* image_new for a size read from a file's header; if it refuses, EINVAL (no pixels),
+ * EFBIG (too many) or ENOMEM (more than the machine has: memory.h) with the message
+ * naming path in err. */
 int image_alloc_for_read(int64_t width, int64_t height, const char *path, struct image **out,
                          char *err, size_t errlen);
 

@@ -22,7 +22,8 @@ struct mesh_data {
  * triangles are kept (the caller drops them, with a warning). Values pass through assimp's
  * float, so they are exact only to float precision.
  * Returns 0, or writes into err a message naming path and the problem and returns nonzero
- * with *out empty. For a malformed file the message is the reader's own; assimp 5.2's
+ * with *out empty: ENOMEM when reading it would need more memory than the machine has
+ * (memory.h; found before assimp's post-processing, which would crash), 1 otherwise. For a malformed file the message is the reader's own; assimp 5.2's
  * OBJ and PLY readers give no line number, some others (FBX) do. The caller frees *out
  * with mesh_data_free. Not thread-safe: assimp keeps its last error in a global. */
 int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errlen);

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "camera.h"
+#include "cleanup.h"
 #include "sampler.h"
 #include "xalloc.h"
 
@@ -186,12 +187,15 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 		nthreads = job.ntiles;
 	struct worker *workers = xcalloc((size_t)nthreads, sizeof *workers);
 	int started = 0;
+	sigset_t mask;
+	cleanup_block_signals(&mask);  /* the workers inherit it: a signal is handled on this thread */
 	for (int i = 0; i < nthreads; i++) {
 		workers[i].job = &job;
 		if (pthread_create(&workers[i].thread, NULL, work, &workers[i]) != 0)
 			break;
 		started++;
 	}
+	cleanup_restore_signals(&mask);
 	if (started == 0) {
 		free(workers);
 		sampler_free(proto);

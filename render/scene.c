@@ -1,4 +1,5 @@
-/* scene.c: release of a lowered scene, which owns all its arrays and its accelerator. */
+/* scene.c: release of a lowered scene, which owns all its arrays and its accelerator,
+ * and a bound on their size. */
 #include "scene.h"
 
 #include <stdlib.h>
@@ -6,6 +7,13 @@
 
 #include "bvh.h"
 #include "grid.h"
+
+uint64_t scene_bytes(uint64_t nprims, uint64_t nvertices)
+{
+	size_t prim = sizeof(struct triangle) > sizeof(struct sphere) ? sizeof(struct triangle) : sizeof(struct sphere);
+	uint64_t bvh = bvh_bytes(nprims), grid = grid_bytes(nprims);
+	return 2 * (nprims * prim + nvertices * 2 * sizeof(struct vec3)) + (bvh > grid ? bvh : grid);
+}
 
 void scene_free(struct scene *s)
 {

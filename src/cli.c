@@ -1,4 +1,4 @@
-/* cli.c: helpers for the subcommands' argument parsing. */
+/* cli.c: helpers for the subcommands' argument parsing, and their memory check. */
 #include "cli.h"
 
 #include <errno.h>
@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "diag.h"
+#include "memory.h"
 #include "xalloc.h"
 
 int cli_usage_error(const struct command *cmd, const char *fmt, ...)
@@ -54,6 +56,18 @@ bool cli_int(const char *s, long lo, long hi, long *out)
 		return false;
 	*out = v;
 	return true;
+}
+
+int cli_memory_fits(struct diag *d, const struct span *at, const char *options, const char *what, uint64_t bytes)
+{
+	char msg[160];
+	if (memory_fits(bytes, msg, sizeof msg))
+		return 0;
+	if (at)
+		diag_error(d, *at, "%s %s", what, msg);
+	else
+		diag_plain(d, DIAG_ERROR, "%s: %s %s", options, what, msg);
+	return EXIT_RENDER;
 }
 
 char *cli_default_output(const char *scene, const char *ext)

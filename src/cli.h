@@ -4,6 +4,7 @@
 #define SCN_CLI_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 enum { EXIT_SCENE = 1, EXIT_USAGE = 2, EXIT_IO = 3, EXIT_RENDER = 4 };
 
@@ -29,6 +30,13 @@ const char *cli_value(int argc, char **argv, int *i);
 char *cli_default_output(const char *scene, const char *ext);
 /* A whole number in [lo, hi] spelt exactly by s. */
 bool cli_int(const char *s, long lo, long hi, long *out);
+
+struct diag;
+struct span;
+/* Whether bytes, for what ("a 640 x 480 image"), fit the machine's memory (memory.h).
+ * If not, says so as an error at the scene's place at or, with at NULL, naming the
+ * command line's options, and returns EXIT_RENDER; else returns 0. */
+int cli_memory_fits(struct diag *d, const struct span *at, const char *options, const char *what, uint64_t bytes);
 
 int cmd_check(const struct command *self, int argc, char **argv);
 int cmd_render(const struct command *self, int argc, char **argv);

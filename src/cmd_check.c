@@ -36,8 +36,8 @@ int cmd_check(const struct command *self, int argc, char **argv)
 	/* lowering reads the mesh files and sky images, so that check finds malformed ones */
 	struct scene sc = { 0 };
 	struct lower_times times;
-	if (status == LOAD_OK && !lang_lower(&d, &desc, &sc, &times))
-		status = LOAD_SCENE_ERROR;
+	if (status == LOAD_OK)
+		status = lang_lower(&d, &desc, &sc, &times, -1);
 	diag_flush(&d);
 	if (status == LOAD_OK && dump)
 		scene_desc_dump(&desc, stdout);

@@ -748,9 +748,18 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	}
 	if ((rc = choose_size(self, &a, r.ref, &desc)))
 		goto done;
+	/* held at once: the first renders, the reference, the render and POV-Ray's */
+	uint64_t images = (CALIBRATION + 3) * image_bytes(desc.camera.width, desc.camera.height);
+	char what[96];
+	snprintf(what, sizeof what, "converging at %d x %d, with %d images at once,", desc.camera.width,
+	         desc.camera.height, CALIBRATION + 3);
+	const char *option = a.width > 0 || a.height > 0 ? "-W/-H" : a.reference ? "--reference" : NULL;
+	if ((rc = cli_memory_fits(&d, option ? NULL : &desc.camera.resolution_span, option, what, images))) {
+		diag_flush(&d);
+		goto done;
+	}
 	double t0 = now();
-	if (!lang_lower(&d, &desc, &r.sc, &wt))
-		rc = EXIT_SCENE;
+	rc = (int)lang_lower(&d, &desc, &r.sc, &wt, (int64_t)images);
 	double lower_s = now() - t0;
 	diag_flush(&d);
 	if (rc)

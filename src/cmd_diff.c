@@ -169,6 +169,13 @@ int cmd_diff(const struct command *self, int argc, char **argv)
 
 	struct image *img[2] = { NULL, NULL }, *small = NULL, *heat = NULL;
 	char err[512];
+	/* before the images are read, so that an unwritable heatmap is found first */
+	struct image_file heat_file;
+	if (a.heatmap && image_file_create(&heat_file, a.heatmap, NULL, err, sizeof err) != 0) {
+		fprintf(stderr, "scn: %s\n", err);
+		return EXIT_IO;
+	}
+	bool heat_open = a.heatmap != NULL;
 	for (int k = 0; k < 2; k++) {
 		struct image_read_options ro = { .ppm_linear = a.ppm_linear[k] };
 		if (image_read_with(a.path[k], &ro, &img[k], err, sizeof err) != 0) {
@@ -206,7 +213,8 @@ int cmd_diff(const struct command *self, int argc, char **argv)
 	}
 	if (a.heatmap) {
 		heat = imgdiff_heatmap(img[0], b);
-		if (image_write(heat, a.heatmap, NULL, err, sizeof err) != 0) {
+		heat_open = false;
+		if (image_file_commit(&heat_file, heat, err, sizeof err) != 0) {
 			fprintf(stderr, "scn: %s\n", err);
 			rc = EXIT_IO;
 			goto done;
@@ -214,6 +222,8 @@ int cmd_diff(const struct command *self, int argc, char **argv)
 	}
 	rc = check_limits(&a, &s) > 0 ? EXIT_DIFFER : 0;
 done:
+	if (heat_open)
+		image_file_commit(&heat_file, NULL, err, sizeof err);
 	image_free(heat);
 	image_free(small);
 	image_free(img[0]);

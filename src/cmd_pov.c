@@ -42,8 +42,8 @@ int cmd_pov(const struct command *self, int argc, char **argv)
 	struct scene sc = { 0 };
 	struct lower_times times;
 	int rc = (int)lang_load_scene(&d, scene, &desc, NULL);
-	if (rc == 0 && !lang_lower(&d, &desc, &sc, &times))
-		rc = EXIT_SCENE;
+	if (rc == 0)
+		rc = (int)lang_lower(&d, &desc, &sc, &times, -1);
 	diag_flush(&d);
 	if (rc == 0) {
 		/* the .pov names the sky image relative to its own folder; on standard output,

@@ -1,5 +1,6 @@
-/* cmd_render.c: scn render: load, apply the command line's overrides, lower, render and
- * write the image, reporting each phase's time and the rays by kind with --stats. */
+/* cmd_render.c: scn render: create the output file, load, apply the command line's
+ * overrides, lower, render and write the image, reporting each phase's time and the rays
+ * by kind with --stats. */
 #include "config.h"
 
 #include <math.h>
@@ -123,6 +124,10 @@ static int override(const struct command *self, const struct render_args *a, str
 		s->max_depth = (int)a->depth;
 	if (a->seed >= 0)
 		s->samples.seed = (uint64_t)a->seed;
+	if (a->region && (a->x0 < 0 || a->y0 < 0 || a->x0 >= a->x1 || a->y0 >= a->y1 || a->x1 > s->camera.width ||
+	                  a->y1 > s->camera.height))
+		return cli_usage_error(self, "region %ld,%ld,%ld,%ld is not inside the %d x %d image", a->x0, a->y0, a->x1,
+		                       a->y1, s->camera.width, s->camera.height);
 	int n = s->samples.count, root = (int)sqrt((double)n);
 	if (s->samples.pattern == PATTERN_CENTER && n != 1)
 		return cli_usage_error(self, "pattern center takes exactly one sample, not %d", n);
@@ -131,6 +136,23 @@ static int override(const struct command *self, const struct render_args *a, str
 	if (s->samples.pattern == PATTERN_GRID && s->samples.target_error > 0)
 		return cli_usage_error(self, "the scene's target_error needs a random, jittered or poisson pattern, not grid");
 	return 0;
+}
+
+/* Whether the w x h image fits the machine's memory; if not, an error at the scene's
+ * resolution or naming the options that set the size, and EXIT_RENDER. */
+static int image_fits(const struct render_args *a, const struct scene_desc *s, struct diag *d, int w, int h)
+{
+	char what[64], options[160] = "";
+	snprintf(what, sizeof what, "a %d x %d image", w, h);
+	if (a->width > 0)
+		snprintf(options, sizeof options, "-W %ld", a->width);
+	if (a->height > 0)
+		snprintf(options + strlen(options), sizeof options - strlen(options), "%s-H %ld", *options ? " " : "",
+		         a->height);
+	if (a->region)
+		snprintf(options + strlen(options), sizeof options - strlen(options), "%s--region %ld,%ld,%ld,%ld",
+		         *options ? " " : "", a->x0, a->y0, a->x1, a->y1);
+	return cli_memory_fits(d, *options ? NULL : &s->camera.resolution_span, options, what, image_bytes(w, h));
 }
 
 static void print_stats(const struct load_times *lt, const struct lower_times *wt, double bvh_s, double render_s,
@@ -177,6 +199,18 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		return rc;
 	}
 
+	/* the output file exists from the start, so that an unwritable place is found
+	 * before the render and not after it */
+	char err[512];
+	struct image_write_options wo = { .bit_depth = (int)a.bit_depth, .float32 = a.float32 };
+	struct image_file file;
+	if (image_file_create(&file, out, &wo, err, sizeof err) != 0) {
+		fprintf(stderr, "scn: %s\n", err);
+		free(out);
+		return EXIT_IO;
+	}
+	bool file_open = true;
+
 	struct diag d;
 	diag_init(&d, stderr);
 	struct scene_desc desc;
@@ -184,11 +218,18 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	struct lower_times wt = { 0 };
 	struct scene sc = { 0 };
 	struct image *img = NULL;
+	struct render_options ro = { .threads = (int)a.threads };
 	rc = (int)lang_load_scene(&d, a.scene, &desc, &lt);
 	if (rc == 0)
 		rc = override(self, &a, &desc);
-	if (rc == 0 && !lang_lower(&d, &desc, &sc, &wt))
-		rc = EXIT_SCENE;
+	if (rc == 0) {
+		ro.x1 = desc.camera.width, ro.y1 = desc.camera.height;
+		if (a.region)
+			ro.x0 = (int)a.x0, ro.y0 = (int)a.y0, ro.x1 = (int)a.x1, ro.y1 = (int)a.y1;
+		rc = image_fits(&a, &desc, &d, ro.x1 - ro.x0, ro.y1 - ro.y0);
+	}
+	if (rc == 0)
+		rc = (int)lang_lower(&d, &desc, &sc, &wt, (int64_t)image_bytes(ro.x1 - ro.x0, ro.y1 - ro.y0));
 	diag_flush(&d);
 	if (rc)
 		goto done;
@@ -196,16 +237,6 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	accel_build(&sc, a.accel);
 	double bvh_s = now() - t0;
 
-	struct render_options ro = { .threads = (int)a.threads, .x0 = 0, .y0 = 0,
-	                             .x1 = sc.camera.width, .y1 = sc.camera.height };
-	if (a.region) {
-		if (a.x0 < 0 || a.y0 < 0 || a.x0 >= a.x1 || a.y0 >= a.y1 || a.x1 > sc.camera.width || a.y1 > sc.camera.height) {
-			rc = cli_usage_error(self, "region %ld,%ld,%ld,%ld is not inside the %d x %d image", a.x0, a.y0, a.x1,
-			                     a.y1, sc.camera.width, sc.camera.height);
-			goto done;
-		}
-		ro.x0 = (int)a.x0, ro.y0 = (int)a.y0, ro.x1 = (int)a.x1, ro.y1 = (int)a.y1;
-	}
 	ro.progress = a.quiet ? false : a.progress >= 0 ? a.progress : isatty(2);
 	img = image_new(ro.x1 - ro.x0, ro.y1 - ro.y0);
 	if (!img) {
@@ -224,10 +255,9 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	if (st.nonfinite)
 		fprintf(stderr, "scn: warning: %llu radiance values were not finite and were left out of the image\n",
 		        (unsigned long long)st.nonfinite);
-	char err[512];
-	struct image_write_options wo = { .bit_depth = (int)a.bit_depth, .float32 = a.float32 };
 	t0 = now();
-	if (image_write(img, out, &wo, err, sizeof err) != 0) {
+	file_open = false;
+	if (image_file_commit(&file, img, err, sizeof err) != 0) {
 		fprintf(stderr, "scn: %s\n", err);
 		rc = EXIT_IO;
 		goto done;
@@ -242,6 +272,8 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		fputc('\n', stderr);
 	}
 done:
+	if (file_open)
+		image_file_commit(&file, NULL, err, sizeof err);
 	image_free(img);
 	scene_free(&sc);
 	scene_desc_free(&desc);

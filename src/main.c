@@ -1,11 +1,13 @@
 /* main.c: the scn command: dispatch to the subcommands, --help and --version. Exit
  * statuses: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not be
- * read or written, 4 the render failed. */
+ * read or written, 4 the render failed (out of memory), 128 + N killed by signal N (after
+ * removing its temporary files: cleanup.h). */
 #include "config.h"
 
 #include <stdio.h>
 #include <string.h>
 
+#include "cleanup.h"
 #include "cli.h"
 
 static const struct command commands[] = {
@@ -122,6 +124,7 @@ static void print_usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+	cleanup_install_signals();
 	if (argc < 2) {
 		print_usage(stderr);
 		return EXIT_USAGE;

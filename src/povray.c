@@ -1,5 +1,7 @@
 /* povray.c: running POV-Ray 3.7 as a child process (fork and exec, no shell), its
- * output to a log file in the private folder, which is where its image goes too. */
+ * output to a log file in the private folder, which is where its image goes too. The
+ * folder, each file povray_file names in it and the child are registered with cleanup.h
+ * while they exist, so that an interrupted scn converge leaves none of them behind. */
 #include "povray.h"
 
 #include <dirent.h>
@@ -12,6 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "xalloc.h"
 
 static double now(void)
@@ -59,6 +62,7 @@ bool povray_open(struct povray *pv, char *err, size_t errlen)
 		*pv = (struct povray){ 0 };
 		return false;
 	}
+	cleanup_register(pv->dir, true);
 	return true;
 }
 
@@ -66,7 +70,16 @@ char *povray_file(const struct povray *pv, const char *name)
 {
 	char *p = xmalloc(strlen(pv->dir) + strlen(name) + 2);
 	sprintf(p, "%s/%s", pv->dir, name);
+	cleanup_register(p, false);
 	return p;
+}
+
+/* Removes the file at p (named by povray_file) and frees p. */
+static void remove_file(char *p)
+{
+	unlink(p);
+	cleanup_unregister(p);
+	free(p);
 }
 
 /* Runs argv (argv[0] a path) in folder dir with standard input from /dev/null and
@@ -74,7 +87,7 @@ char *povray_file(const struct povray *pv, const char *name)
  * signal when one ended it), or -1 when it could not be started. */
 static int run_child(const char *dir, char *const argv[], const char *log)
 {
-	pid_t pid = fork();
+	pid_t pid = cleanup_fork();
 	if (pid < 0)
 		return -1;
 	if (pid == 0) {
@@ -94,6 +107,7 @@ static int run_child(const char *dir, char *const argv[], const char *log)
 	while (waitpid(pid, &status, 0) < 0)
 		if (errno != EINTR)
 			return -1;
+	cleanup_reaped(pid);
 	return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
@@ -161,11 +175,11 @@ int povray_render(const struct povray *pv, const char *pov_name, const char *aa,
 	argv[n++] = wt;
 	argv[n] = NULL;
 	*out = (struct povray_render){ .trace = -1 };
+	char *log_path = povray_file(pv, log), *png_path = povray_file(pv, png);
 	double t0 = now();
 	int status = run_child(pv->dir, argv, log);
 	out->seconds = now() - t0;
 	free(words);
-	char *log_path = povray_file(pv, log), *png_path = povray_file(pv, png);
 	int rc = 0;
 	if (status != 0) {
 		if (status < 0)
@@ -179,10 +193,8 @@ int povray_render(const struct povray *pv, const char *pov_name, const char *aa,
 	} else {
 		out->trace = trace_time(log_path);
 	}
-	unlink(png_path);
-	unlink(log_path);
-	free(log_path);
-	free(png_path);
+	remove_file(png_path);
+	remove_file(log_path);
 	return rc;
 }
 
@@ -195,13 +207,12 @@ void povray_close(struct povray *pv)
 			while ((e = readdir(d))) {
 				if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
 					continue;
-				char *p = povray_file(pv, e->d_name);
-				unlink(p);
-				free(p);
+				remove_file(povray_file(pv, e->d_name));
 			}
 			closedir(d);
 		}
 		rmdir(pv->dir);
+		cleanup_unregister(pv->dir);
 	}
 	free(pv->dir);
 	free(pv->path);

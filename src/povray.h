@@ -18,7 +18,8 @@ struct povray {
  * with the reason in err, pv then needing no povray_close. */
 bool povray_open(struct povray *pv, char *err, size_t errlen);
 
-/* The path of the file named name in pv's folder; malloc'd. */
+/* The path of the file named name in pv's folder; malloc'd. The file is removed by
+ * povray_close, or by a signal before that (cleanup.h). */
 char *povray_file(const struct povray *pv, const char *name);
 
 struct povray_render {

@@ -18,3 +18,4 @@ EXTRA_DIST += tests/unit/check.h tests/unit/random.h
 include tests/unit/local.mk
 include tests/render/local.mk
 include tests/pov/local.mk
+include tests/faults/local.mk

@@ -1,0 +1,146 @@
+/* cleanup.c: the registry of what an early end must remove, and the signal handler that
+ * removes it. The handler may interrupt the main thread anywhere, so the registry is a
+ * fixed table of copied paths whose slot is marked in use only after its path is
+ * complete, and the handler calls only async-signal-safe functions (kill, waitpid,
+ * unlink, rmdir, write, signal, raise). */
+#include "cleanup.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+enum { SLOTS = 16, SLOT_BYTES = 4096 + 64 };
+enum { FREE, FILE_SLOT, DIR_SLOT };
+
+static char slot_path[SLOTS][SLOT_BYTES];
+static volatile sig_atomic_t slot_kind[SLOTS];
+static volatile sig_atomic_t child;     /* the registered child's pid, or 0 */
+
+static const int handled[] = { SIGINT, SIGTERM, SIGHUP };
+enum { NHANDLED = sizeof handled / sizeof handled[0] };
+
+/* Async-signal-safe: the handler's whole work but the exit. */
+static void remove_all(void)
+{
+	pid_t pid = (pid_t)child;
+	if (pid > 0) {
+		kill(pid, SIGKILL);
+		waitpid(pid, NULL, 0);
+		child = 0;
+	}
+	for (int kind = FILE_SLOT; kind <= DIR_SLOT; kind++)  /* a folder empties first */
+		for (int i = 0; i < SLOTS; i++)
+			if (slot_kind[i] == kind) {
+				if (kind == FILE_SLOT)
+					unlink(slot_path[i]);
+				else
+					rmdir(slot_path[i]);
+				slot_kind[i] = FREE;
+			}
+}
+
+static void on_signal(int sig)
+{
+	remove_all();
+	static const char prefix[] = "scn: stopped by ";
+	const char *name = sig == SIGINT ? "SIGINT\n" : sig == SIGTERM ? "SIGTERM\n" : "SIGHUP\n";
+	ssize_t ignored = write(2, prefix, sizeof prefix - 1);
+	ignored = write(2, name, strlen(name));
+	(void)ignored;
+	/* the default action, once the handler returns and the signal is unblocked: the
+	 * process ends as killed by sig, which its parent sees (status 128 + sig) */
+	signal(sig, SIG_DFL);
+	raise(sig);
+}
+
+void cleanup_install_signals(void)
+{
+	struct sigaction sa = { .sa_handler = on_signal };
+	sigemptyset(&sa.sa_mask);
+	for (int i = 0; i < NHANDLED; i++)
+		sigaddset(&sa.sa_mask, handled[i]);
+	for (int i = 0; i < NHANDLED; i++) {
+		struct sigaction old;
+		/* a signal ignored by whoever started scn (nohup, a shell's background job) stays ignored */
+		if (sigaction(handled[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+			continue;
+		sigaction(handled[i], &sa, NULL);
+	}
+}
+
+bool cleanup_register(const char *path, bool dir)
+{
+	size_t n = strlen(path);
+	if (n >= SLOT_BYTES)
+		return false;
+	for (int i = 0; i < SLOTS; i++)
+		if (slot_kind[i] == FREE) {
+			memcpy(slot_path[i], path, n + 1);
+			atomic_signal_fence(memory_order_seq_cst);  /* the path is whole before it counts */
+			slot_kind[i] = dir ? DIR_SLOT : FILE_SLOT;
+			return true;
+		}
+	return false;
+}
+
+void cleanup_unregister(const char *path)
+{
+	for (int i = 0; i < SLOTS; i++)
+		if (slot_kind[i] != FREE && strcmp(slot_path[i], path) == 0) {
+			slot_kind[i] = FREE;
+			return;
+		}
+}
+
+static void handled_set(sigset_t *set)
+{
+	sigemptyset(set);
+	for (int i = 0; i < NHANDLED; i++)
+		sigaddset(set, handled[i]);
+}
+
+void cleanup_block_signals(sigset_t *old)
+{
+	sigset_t set;
+	handled_set(&set);
+	pthread_sigmask(SIG_BLOCK, &set, old);
+}
+
+void cleanup_restore_signals(const sigset_t *old)
+{
+	pthread_sigmask(SIG_SETMASK, old, NULL);
+}
+
+pid_t cleanup_fork(void)
+{
+	sigset_t old;
+	cleanup_block_signals(&old);
+	pid_t pid = fork();
+	if (pid == 0) {
+		for (int i = 0; i < NHANDLED; i++) {
+			struct sigaction sa;
+			if (sigaction(handled[i], NULL, &sa) == 0 && sa.sa_handler == on_signal)
+				signal(handled[i], SIG_DFL);
+		}
+	} else if (pid > 0) {
+		child = pid;
+	}
+	cleanup_restore_signals(&old);
+	return pid;
+}
+
+void cleanup_reaped(pid_t pid)
+{
+	if (child == pid)
+		child = 0;
+}
+
+_Noreturn void cleanup_exit(int status)
+{
+	remove_all();
+	exit(status);
+}
