@@ -156,32 +156,29 @@ struct grid *grid_build(const struct scene *sc)
 
 	size_t ncells = (size_t)g->n[0] * g->n[1] * g->n[2];
 	g->start = xcalloc(ncells + 1, sizeof *g->start);
+	/* count each cell's references into start[c], sum them so that start[c] is where
+	 * cell c ends, then fill each cell from its end down: start[c] ends where it begins */
 	int c[3], first[3], last[3];
 	for (size_t i = 0; i < n; i++) {
 		cell_range(g, &boxes[i], first, last);
 		for (c[2] = first[2]; c[2] <= last[2]; c[2]++)
 			for (c[1] = first[1]; c[1] <= last[1]; c[1]++)
 				for (c[0] = first[0]; c[0] <= last[0]; c[0]++)
-					g->start[cell_index(g, c) + 1]++;
+					g->start[cell_index(g, c)]++;
 	}
-	for (size_t i = 0; i < ncells; i++)
-		g->start[i + 1] += g->start[i];
+	for (size_t i = 1; i <= ncells; i++)
+		g->start[i] += g->start[i - 1];
 	g->nrefs = g->start[ncells];
 	g->refs = xcalloc(g->nrefs ? g->nrefs : 1, sizeof *g->refs);
-	/* fill through a moving copy of the offsets */
-	uint32_t *fill = xcalloc(ncells, sizeof *fill);
-	for (size_t i = 0; i < ncells; i++)
-		fill[i] = g->start[i];
-	for (size_t i = 0; i < n; i++) {
+	for (size_t i = n; i-- > 0;) {
 		cell_range(g, &boxes[i], first, last);
 		bool multi = first[0] != last[0] || first[1] != last[1] || first[2] != last[2];
 		uint32_t ref = nth_prim(sc, i) | (multi ? MULTI_CELL : 0);
 		for (c[2] = first[2]; c[2] <= last[2]; c[2]++)
 			for (c[1] = first[1]; c[1] <= last[1]; c[1]++)
 				for (c[0] = first[0]; c[0] <= last[0]; c[0]++)
-					g->refs[fill[cell_index(g, c)]++] = ref;
+					g->refs[--g->start[cell_index(g, c)]] = ref;
 	}
-	free(fill);
 	free(boxes);
 	return g;
 }
