@@ -250,7 +250,9 @@ static bool walk_start(const struct grid *g, const struct ray *r, double tmax, s
 		return false;
 	w->started = w->done = false;
 	for (int k = 0; k < 3; k++) {
-		w->active[k] = d[k] != 0;
+		/* a component so small that 1 / d overflows moves the ray by less than any
+		 * coordinate can show: as good as zero */
+		w->active[k] = d[k] != 0 && isfinite(w->inv[k]);
 		w->step[k] = d[k] < 0 ? -1 : 1;
 		w->cell[k] = cell_of(g, k, w->active[k] ? o[k] + tnear * d[k] : o[k]);
 		if (!w->active[k]) {

@@ -577,8 +577,9 @@ static void test_signed_zero_on_face(void)
 	b.sc.triangles[0].surface = 0;
 	struct accels acc;
 	accels_build(&b.sc, &acc);
-	static const double zeros[2] = { 0.0, -0.0 };
-	for (int sx = 0; sx < 2; sx++)
+	/* and a denormal x, whose reciprocal overflows */
+	static const double zeros[3] = { 0.0, -0.0, 0x1p-1040 };
+	for (int sx = 0; sx < 3; sx++)
 		for (int sz = 0; sz < 2; sz++) {
 			/* in the plane x = 0, crossing the edge at (0, 0, 1); then the same from the
 			 * other side: origin on the hi face y = 1, going -y */
