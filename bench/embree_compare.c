@@ -160,7 +160,7 @@ static int compare(RTCDevice dev, const char *path)
 	struct scene_desc desc;
 	struct scene sc = { 0 };
 	struct lower_times lt;
-	bool ok = lang_load_scene(&d, path, &desc, NULL) == 0 && lang_lower(&d, &desc, &sc, &lt);
+	bool ok = lang_load_scene(&d, path, &desc, NULL) == 0 && lang_lower(&d, &desc, &sc, &lt, -1) == 0;
 	diag_flush(&d);
 	diag_fini(&d);
 	if (!ok || sc.ntriangles == 0) {
@@ -181,7 +181,7 @@ static int compare(RTCDevice dev, const char *path)
 	const char *base = strrchr(path, '/');
 	printf("%s: %zu triangles; build: scn %.3f s, Embree %.3f s\n", base ? base + 1 : path, sc.ntriangles,
 	       scn_build, rtc_build);
-	printf("  %-26s %7s %12s %14s %10s %16s\n", "rays", "threads", "scn Mrays/s", "Embree Mrays/s", "scn/Embree",
+	printf("  %-20s %7s %12s %15s %11s  %s\n", "rays", "threads", "scn Mrays/s", "Embree Mrays/s", "scn/Embree",
 	       "hits scn/Embree");
 	static const char *const kinds[2] = { "camera (coherent)", "random (incoherent)" };
 	for (int kind = 0; kind < 2; kind++)
@@ -189,7 +189,7 @@ static int compare(RTCDevice dev, const char *path)
 			size_t hs, he;
 			double s = measure(&sc, rtc, false, rays + kind * n, n, threads, &hs);
 			double e = measure(&sc, rtc, true, rays + kind * n, n, threads, &he);
-			printf("  %-26s %7d %12.2f %14.2f %9.0f%% %8zu/%zu\n", kinds[kind], threads, s, e, 100 * s / e, hs, he);
+			printf("  %-20s %7d %12.2f %15.2f %10.0f%%  %zu/%zu\n", kinds[kind], threads, s, e, 100 * s / e, hs, he);
 		}
 	fflush(stdout);
 	free(rays);
