@@ -110,6 +110,13 @@ def scene_settings(path):
     return ("%sx%s" % res.groups() if res else "?", spp.group(1) if spp else "1", depth.group(1) if depth else "5")
 
 
+def image_rmse(a, b):
+    """scn diff's RMSE between the two renders, in linear light: that both drew the same picture."""
+    p = subprocess.run([SCN, "diff", a, b], capture_output=True, text=True)
+    m = re.search(r"^rmse ([0-9.e+-]+)", p.stdout, re.M)
+    return float(m.group(1)) if m else float("nan")
+
+
 def scene_table(work, runs, table_scenes):
     rows = []
     for name, what, file in table_scenes:
@@ -123,7 +130,9 @@ def scene_table(work, runs, table_scenes):
             s_runs.append(scn_render(scene, os.path.join(work, file[:-4] + "-scn.png")))
             wall, mb, _ = timed(cmd, cwd=work)
             p_runs.append({"wall": wall, "mb": mb})
-        rows.append((name, what, scene_settings(scene), median_run(s_runs), median_run(p_runs),
+        s_med = median_run(s_runs)
+        s_med["rmse"] = image_rmse(os.path.join(work, file[:-4] + "-scn.png"), os.path.join(work, file[:-4] + ".png"))
+        rows.append((name, what, scene_settings(scene), s_med, median_run(p_runs),
                      max(r["mb"] for r in s_runs), max(r["mb"] for r in p_runs), cmd))
     return rows
 
@@ -131,20 +140,27 @@ def scene_table(work, runs, table_scenes):
 def print_scene_table(rows, runs):
     print("scn against POV-Ray 3.7: wall time, median of %d alternating runs (scn, POV-Ray, scn, ...); "
           "scn -j %d, POV-Ray +WT%d;" % (runs, THREADS, THREADS))
-    print("same resolution, samples per pixel and max_depth (scn pov writes both). scn samples 5 spp "
-          "jittered; POV-Ray cannot place them: its")
-    print("nearest is +A0.0 +AM2 +R2 -J, a 3x3 lattice per pixel whose edge samples are shared with "
-          "neighbours (about 4 new samples per pixel).")
+    print("same resolution, samples per pixel and max_depth (scn pov writes both). scn's samples are jittered "
+          "(5 spp headline, 4 bunny);")
+    print("POV-Ray cannot place them, and scn pov maps both counts to its nearest, +A0.0 +AM2 +R2 -J: a 3x3 "
+          "lattice per pixel whose")
+    print("edge samples neighbouring pixels share (about 4 new samples per pixel). 1 spp scenes: one ray "
+          "through each pixel centre in both.")
     print()
-    head = ("%-12s %-10s %3s %5s | %7s %7s %7s | %7s %7s | %6s %6s %7s" %
+    head = ("%-12s %-10s %3s %5s | %7s %7s %7s | %7s %7s | %6s %6s %7s | %6s" %
             ("scene", "size", "spp", "depth", "scn s", "pov s", "pov/scn", "scn MB", "pov MB", "load", "build",
-             "render"))
+             "render", "RMSE"))
     print(head)
     print("-" * len(head))
     for name, what, (size, spp, depth), s, p, smb, pmb, _ in rows:
-        print("%-12s %-10s %3s %5s | %7.2f %7.2f %6.1fx | %7.0f %7.0f | %6.2f %6.2f %7.2f" %
+        print("%-12s %-10s %3s %5s | %7.2f %7.2f %6.1fx | %7.0f %7.0f | %6.2f %6.2f %7.2f | %6.4f" %
               (name, size, spp, depth, s["wall"], p["wall"], p["wall"] / s["wall"], smb, pmb, s["load"],
-               s["build"], s["render"]))
+               s["build"], s["render"], s["rmse"]))
+    print()
+    print("pov/scn: how many times faster scn is. MB: peak resident memory. load (parse, evaluate, read meshes), "
+          "build (BVH)")
+    print("and render: scn's phases (--stats). RMSE: scn diff between the two images, in linear light "
+          "(sampling noise; the same picture).")
     print()
     print("scn's rays per second by kind during its render phase (Mrays/s; the median run's --stats):")
     head = "%-12s %9s %9s %11s %11s %9s" % ("scene", "camera", "shadow", "reflection", "refraction", "total")
