@@ -19,3 +19,4 @@ include tests/unit/local.mk
 include tests/render/local.mk
 include tests/pov/local.mk
 include tests/faults/local.mk
+include tests/valgrind/local.mk
