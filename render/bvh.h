@@ -9,8 +9,9 @@
 
 enum accel { ACCEL_BVH, ACCEL_GRID, ACCEL_NONE }; /* ACCEL_GRID: see accel.h and grid.h */
 
-/* Builds over sc's spheres and triangles. ACCEL_NONE makes one leaf of everything:
- * brute force through the same code, for tests and the scaling study. */
+/* Builds over sc's spheres and triangles, on every core; the tree is the same whatever
+ * their number. ACCEL_NONE makes one leaf of everything: brute force through the same
+ * code, for tests and the scaling study. */
 struct bvh *bvh_build(const struct scene *sc, enum accel kind);
 void bvh_free(struct bvh *b);
 /* The most bytes bvh_build holds at once for n primitives (its build records, and the
