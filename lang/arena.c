@@ -1,5 +1,7 @@
 /* arena.c: chained blocks and a bump pointer. Grammar actions allocate here and never
- * free, so error recovery cannot leak. */
+ * free, so error recovery cannot leak. Under AddressSanitizer every request gets a block
+ * of its own, of exactly its size, so that reading past a node (which is only as large
+ * as its kind needs) is caught. */
 #include "arena.h"
 
 #include <stdalign.h>
@@ -10,6 +12,17 @@
 #include "xalloc.h"
 
 enum { BLOCK_SIZE = 64 * 1024 };
+
+#if defined(__SANITIZE_ADDRESS__)
+#define EXACT_BLOCKS 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define EXACT_BLOCKS 1
+#endif
+#endif
+#ifndef EXACT_BLOCKS
+#define EXACT_BLOCKS 0
+#endif
 
 struct block {
 	struct block *next;
@@ -39,12 +52,13 @@ void arena_free(struct arena *a)
 
 void *arena_alloc(struct arena *a, size_t size)
 {
-	const size_t align = alignof(max_align_t);
-	size = (size + align - 1) & ~(align - 1);
+	const size_t align = alignof(double) > alignof(void *) ? alignof(double) : alignof(void *);
+	if (!EXACT_BLOCKS)
+		size = (size + align - 1) & ~(align - 1);
 	struct block *b = a->head;
-	if (!b || b->size - b->used < size) {
+	if (!b || b->size - b->used < size || EXACT_BLOCKS) {
 		/* Big requests get a block of their own, so a block wastes at most its tail. */
-		size_t cap = size > BLOCK_SIZE / 4 ? size : BLOCK_SIZE;
+		size_t cap = size > BLOCK_SIZE / 4 || EXACT_BLOCKS ? size : BLOCK_SIZE;
 		if (cap > SIZE_MAX - sizeof *b)
 			cap = SIZE_MAX - sizeof *b; /* xmalloc then fails cleanly */
 		b = xmalloc(sizeof *b + cap);

@@ -8,7 +8,8 @@ struct arena;
 
 struct arena *arena_new(void);
 void arena_free(struct arena *a);
-/* Zeroed, aligned for any type; never NULL (exits 4 when memory runs out). */
+/* Zeroed, aligned for pointers and doubles (not for long double or vector types); never
+ * NULL (exits 4 when memory runs out). */
 void *arena_alloc(struct arena *a, size_t size);
 char *arena_strndup(struct arena *a, const char *s, size_t n);
 

@@ -10,8 +10,9 @@ void ast_list_push(struct arena *a, struct ast_list *l, struct ast *node)
 	if (!node)
 		return;
 	if (l->n == l->cap) {
-		/* the old array stays in the arena: amortised, a list costs at most twice its size */
-		size_t cap = l->cap ? 2 * l->cap : 4;
+		/* the old array stays in the arena: amortised, a list costs at most twice its
+		 * size; most lists hold one or two nodes */
+		uint32_t cap = l->cap ? 2 * l->cap : 1;
 		struct ast **v = arena_alloc(a, cap * sizeof *v);
 		if (l->n)
 			memcpy(v, l->v, l->n * sizeof *v);
@@ -21,9 +22,19 @@ void ast_list_push(struct arena *a, struct ast_list *l, struct ast *node)
 	l->v[l->n++] = node;
 }
 
+/* The bytes a node of each kind needs: the header and its member of the union. */
+#define NODE_SIZE(member) (offsetof(struct ast, u) + sizeof(((struct ast *)0)->u.member))
+static const size_t node_size[] = {
+	[AST_NUM] = NODE_SIZE(num), [AST_STR] = NODE_SIZE(str), [AST_VEC] = NODE_SIZE(vec),
+	[AST_IDENT] = NODE_SIZE(ident), [AST_NEG] = NODE_SIZE(bin), [AST_BINARY] = NODE_SIZE(bin),
+	[AST_CALL] = NODE_SIZE(call), [AST_MEMBER] = NODE_SIZE(member), [AST_ERROR] = offsetof(struct ast, u),
+	[AST_LET] = NODE_SIZE(let), [AST_INCLUDE] = NODE_SIZE(include), [AST_FOR] = NODE_SIZE(loop),
+	[AST_BLOCK_STMT] = NODE_SIZE(stmt), [AST_UNKNOWN_STMT] = NODE_SIZE(item), [AST_ITEM] = NODE_SIZE(item),
+};
+
 struct ast *ast_new(struct arena *a, enum ast_kind kind, struct span sp)
 {
-	struct ast *n = arena_alloc(a, sizeof *n);
+	struct ast *n = arena_alloc(a, node_size[kind]);
 	n->kind = kind;
 	n->span = sp;
 	n->depth = 1;
@@ -32,7 +43,7 @@ struct ast *ast_new(struct arena *a, enum ast_kind kind, struct span sp)
 
 static unsigned deeper(const struct ast *e, unsigned d)
 {
-	return e && e->depth + 1 > d ? e->depth + 1 : d;
+	return e && e->depth + 1u > d ? e->depth + 1u : d;
 }
 
 struct ast *ast_num(struct arena *a, struct span sp, double v)

@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "diag.h"
 #include "keywords.h"
@@ -28,7 +29,7 @@ enum ast_type { TYPE_NONE, TYPE_NUM, TYPE_VEC, TYPE_STR, TYPE_PIGMENT, TYPE_MATE
 
 struct ast_list {
 	struct ast **v;
-	size_t n, cap;
+	uint32_t n, cap;
 };
 
 /* { ARGS ITEMS }: positional arguments, then attribute items. */
@@ -41,12 +42,14 @@ struct ast_block {
 
 struct binding;
 
+/* A node is allocated only as large as its kind's member of u needs (ast_new): a
+ * scene of a million spheres holds tens of millions of nodes. */
 struct ast {
-	enum ast_kind kind;
-	struct span span;
-	unsigned depth;        /* expression nesting, bounded by LANG_MAX_NESTING */
-	enum ast_type type;    /* check.c: type of an expression */
+	uint8_t kind;          /* enum ast_kind */
+	uint8_t type;          /* enum ast_type: check.c's type of an expression */
 	bool reported;         /* eval.c: an error here was reported once already */
+	uint16_t depth;        /* expression nesting, bounded by LANG_MAX_NESTING (+1 until checked) */
+	struct span span;
 	union {
 		double num;
 		struct { char *text; size_t len; } str;

@@ -497,7 +497,7 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 				/* at the index itself when the face is written <i, j, k> */
 				struct ast *at = fl->v[i]->kind == AST_VEC ? fl->v[i]->u.vec[k] : fl->v[i];
 				char nb[32];
-				eval_error(ev, at, "a face's indices must be whole numbers from 0 to %zu (0-based), not %s",
+				eval_error(ev, at, "a face's indices must be whole numbers from 0 to %u (0-based), not %s",
 				           vl->n - 1, num_text(f[k], nb));
 				return false;
 			}
@@ -507,7 +507,7 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 	if (lists[2] && ok) {
 		struct ast_list *nl = &lists[2]->u.item.block->args;
 		if (nl->n != vl->n) {
-			eval_error(ev, lists[2], "a mesh needs one normal per vertex: %zu vert%s, %zu normal%s", vl->n,
+			eval_error(ev, lists[2], "a mesh needs one normal per vertex: %u vert%s, %u normal%s", vl->n,
 			           vl->n == 1 ? "ex" : "ices", nl->n, nl->n == 1 ? "" : "s");
 			return false;
 		}

@@ -230,6 +230,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	}
 	if (rc == 0)
 		rc = (int)lang_lower(&d, &desc, &sc, &wt, (int64_t)image_bytes(ro.x1 - ro.x0, ro.y1 - ro.y0));
+	scene_desc_free(&desc); /* lowered: its memory goes to the BVH */
 	diag_flush(&d);
 	if (rc)
 		goto done;
@@ -276,7 +277,6 @@ done:
 		image_file_commit(&file, NULL, err, sizeof err);
 	image_free(img);
 	scene_free(&sc);
-	scene_desc_free(&desc);
 	diag_fini(&d);
 	free(out);
 	return rc;
