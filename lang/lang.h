@@ -18,6 +18,7 @@ struct lang_ctx {
 	bool abort;                   /* a fatal lexical error: report nothing more */
 	bool too_deep;                /* "nested too deep" was said for this file */
 	uint32_t pos;                 /* local offset of the scanner */
+	uint32_t read_pos;            /* local offset of what YY_INPUT has handed the scanner */
 	unsigned nopen;               /* open brackets, innermost last */
 	unsigned nopen_of[3];         /* how many of them are '{', '(' and '<' */
 	struct { struct span sp; char ch; } open[LANG_MAX_NESTING];
