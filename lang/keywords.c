@@ -1,7 +1,9 @@
-/* keywords.c: spelling of the reserved words, looked up by binary search. */
+/* keywords.c: spelling of the reserved words, looked up in a hash table: every name in
+ * a scene is looked up, millions of them in a large one. */
 #include "keywords.h"
 
-#include <stdlib.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <string.h>
 
 /* ORDER KEYWORDS */
@@ -15,37 +17,38 @@ static const char *const names[KW_COUNT_ALL] = {
 	"pattern", "seed", "target_error",
 };
 
-static unsigned char sorted[KW_COUNT_ALL]; /* keyword codes in the order of their names */
-static int nsorted;
+enum { TABLE_SIZE = 256 }; /* a power of two, over five times the keyword count */
 
-static int by_name(const void *a, const void *b)
+static signed char table[TABLE_SIZE]; /* keyword code + 1, or 0 for an empty slot */
+static bool filled;
+
+/* FNV-1a over the n bytes of s */
+static uint32_t hash(const char *s, unsigned n)
 {
-	return strcmp(names[*(const unsigned char *)a], names[*(const unsigned char *)b]);
+	uint32_t h = 2166136261u;
+	for (unsigned i = 0; i < n; i++)
+		h = (h ^ (unsigned char)s[i]) * 16777619u;
+	return h;
 }
 
 int kw_lookup(const char *s, unsigned n)
 {
-	if (!nsorted) { /* first call; the front end runs on one thread */
-		for (int i = 0; i < KW_COUNT_ALL; i++)
-			sorted[i] = (unsigned char)i;
-		qsort(sorted, KW_COUNT_ALL, 1, by_name);
-		nsorted = KW_COUNT_ALL;
+	if (!filled) { /* first call; the front end runs on one thread */
+		for (int i = 0; i < KW_COUNT_ALL; i++) {
+			uint32_t k = hash(names[i], (unsigned)strlen(names[i]));
+			while (table[k & (TABLE_SIZE - 1)])
+				k++;
+			table[k & (TABLE_SIZE - 1)] = (signed char)(i + 1);
+		}
+		filled = true;
 	}
-	int lo = 0, hi = nsorted - 1;
-	while (lo <= hi) {
-		int mid = (lo + hi) / 2;
-		const char *name = names[sorted[mid]];
-		int c = strncmp(s, name, n);
-		if (c == 0)
-			c = name[n] ? -1 : 0;
-		if (c == 0)
-			return sorted[mid];
-		if (c < 0)
-			hi = mid - 1;
-		else
-			lo = mid + 1;
+	for (uint32_t k = hash(s, n);; k++) {
+		int code = table[k & (TABLE_SIZE - 1)] - 1;
+		if (code < 0)
+			return -1;
+		if (strncmp(names[code], s, n) == 0 && names[code][n] == '\0')
+			return code;
 	}
-	return -1;
 }
 
 const char *kw_name(enum kw k)
