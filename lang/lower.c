@@ -33,7 +33,7 @@ struct lowering {
 	struct mesh_cache_entry *mesh_cache;
 	size_t nmesh_cache, cap_mesh_cache;
 	double mesh_seconds;
-	bool too_big;                  /* a mesh file needs more memory than there is */
+	bool too_big;                  /* a mesh file or the sky image needs more memory than there is */
 };
 
 static double now(void)
@@ -367,7 +367,9 @@ static bool lower_sky(struct lowering *lw)
 	case SKY_IMAGE: {
 		struct image *img;
 		char err[512];
-		if (image_read(k->image_path, &img, err, sizeof err) != 0) {
+		int e = image_read(k->image_path, &img, err, sizeof err);
+		if (e != 0) {
+			lw->too_big = lw->too_big || e == ENOMEM;
 			diag_error(lw->diag, k->span, "cannot read the skybox image: %s", err);
 			return false;
 		}

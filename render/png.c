@@ -27,10 +27,18 @@ struct png_io {
 	float *table;
 };
 
+/* libpng's ways of saying that memory ran out (its own, and zlib's through it). */
+static bool says_out_of_memory(const char *msg)
+{
+	return strstr(msg, "Out of memory") || strstr(msg, "Out of Memory") || strstr(msg, "insufficient memory");
+}
+
 static void on_error(png_structp png, png_const_charp msg)
 {
 	struct png_io *io = png_get_error_ptr(png);
 	snprintf(io->msg, sizeof io->msg, "%s", msg);
+	if (!io->error && says_out_of_memory(msg))
+		io->error = ENOMEM;   /* status 4, as for any allocation that fails */
 	png_longjmp(png, 1);
 }
 

@@ -58,6 +58,11 @@ bool cli_int(const char *s, long lo, long hi, long *out)
 	return true;
 }
 
+int cli_file_status(int e)
+{
+	return e == ENOMEM ? EXIT_RENDER : EXIT_IO;
+}
+
 int cli_memory_fits(struct diag *d, const struct span *at, const char *options, const char *what, uint64_t bytes)
 {
 	char msg[160];

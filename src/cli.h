@@ -31,6 +31,10 @@ char *cli_default_output(const char *scene, const char *ext);
 /* A whole number in [lo, hi] spelt exactly by s. */
 bool cli_int(const char *s, long lo, long hi, long *out);
 
+/* The exit status for a failed read or write with errno e: EXIT_RENDER when memory ran
+ * out (ENOMEM), as for any allocation, EXIT_IO otherwise. */
+int cli_file_status(int e);
+
 struct diag;
 struct span;
 /* Whether bytes, for what ("a 640 x 480 image"), fit the machine's memory (memory.h).

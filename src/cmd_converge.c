@@ -741,9 +741,10 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	if (rc)
 		goto done;
 	char err[1024];
-	if (a.reference && image_read(a.reference, &r.ref, err, sizeof err) != 0) {
+	int e = a.reference ? image_read(a.reference, &r.ref, err, sizeof err) : 0;
+	if (e != 0) {
 		fprintf(stderr, "scn: %s\n", err);
-		rc = EXIT_IO;
+		rc = cli_file_status(e);
 		goto done;
 	}
 	if ((rc = choose_size(self, &a, r.ref, &desc)))

@@ -178,9 +178,10 @@ int cmd_diff(const struct command *self, int argc, char **argv)
 	bool heat_open = a.heatmap != NULL;
 	for (int k = 0; k < 2; k++) {
 		struct image_read_options ro = { .ppm_linear = a.ppm_linear[k] };
-		if (image_read_with(a.path[k], &ro, &img[k], err, sizeof err) != 0) {
+		int e = image_read_with(a.path[k], &ro, &img[k], err, sizeof err);
+		if (e != 0) {
 			fprintf(stderr, "scn: %s\n", err);
-			rc = EXIT_IO;
+			rc = cli_file_status(e);
 			goto done;
 		}
 	}
@@ -214,9 +215,10 @@ int cmd_diff(const struct command *self, int argc, char **argv)
 	if (a.heatmap) {
 		heat = imgdiff_heatmap(img[0], b);
 		heat_open = false;
-		if (image_file_commit(&heat_file, heat, err, sizeof err) != 0) {
+		int e = image_file_commit(&heat_file, heat, err, sizeof err);
+		if (e != 0) {
 			fprintf(stderr, "scn: %s\n", err);
-			rc = EXIT_IO;
+			rc = cli_file_status(e);
 			goto done;
 		}
 	}

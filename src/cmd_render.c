@@ -258,9 +258,10 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		        (unsigned long long)st.nonfinite);
 	t0 = now();
 	file_open = false;
-	if (image_file_commit(&file, img, err, sizeof err) != 0) {
+	int e = image_file_commit(&file, img, err, sizeof err);
+	if (e != 0) {
 		fprintf(stderr, "scn: %s\n", err);
-		rc = EXIT_IO;
+		rc = cli_file_status(e);
 		goto done;
 	}
 	if (a.stats)

@@ -75,7 +75,7 @@ static const struct command commands[] = {
 	  "  -q              print no metrics, only the failures\n"
 	  "Exit status: 0 compared and within every limit, 1 a limit is exceeded (each is named\n"
 	  "on standard error) or the sizes differ, 2 bad command line, 3 an image could not be\n"
-	  "read or the heatmap written.\n",
+	  "read or the heatmap written, 4 an image needs more memory than the machine has.\n",
 	  cmd_diff },
 	{ "converge",
 	  "scn converge SCENE [--reference REF] [--budget SECONDS] [--csv OUT.csv] [--plot OUT.svg]\n"

@@ -49,8 +49,13 @@ expect_capped 4 10 "$SCN" converge big.scn --no-pov -W 8000 -q
 expect_grep "$work/err" '^scn: error: -W/-H: converging at 8000 x 8000, with 5 images at once, needs 3\.6 GiB; ulimit -v leaves'
 # an image file whose header asks for more than there is
 printf 'P6\n16384 16384\n255\n' >big.ppm
-expect_capped 3 10 "$SCN" diff big.ppm big.ppm
+expect_capped 4 10 "$SCN" diff big.ppm big.ppm
 expect_grep "$work/err" "^scn: cannot read 'big\.ppm': its 16384 x 16384 image needs 3\.0 GiB; ulimit -v leaves"
+# the same image as a sky
+printf 'skybox { image "big.ppm" }\n' >sky.scn
+expect_capped 4 10 "$SCN" render sky.scn -o dest/keep.png
+expect_grep "$work/err" "^sky\.scn:1:1: error: cannot read the skybox image: cannot read '.*big\.ppm': its 16384 x 16384 image needs 3\.0 GiB; ulimit -v leaves"
+no_output "a sky image too big"
 
 # 4000 copies of the bunny: 14.7 million triangles and their BVH, refused at the mesh
 # where the count passes what there is, before anything is built; scn check, which builds
