@@ -164,9 +164,12 @@ void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h
 	case PRIM_PLANE: {
 		const struct plane *pl = &sc->planes[prim_index(h->prim)];
 		struct vec3 p = vmad(r->o, h->t, r->d);
-		/* project onto the plane: exact for axis-aligned planes */
+		/* project onto the plane. The bound is on the magnitudes that entered the
+		 * projection, not on the projected point: with a normal whose length is 1 only
+		 * to a rounding (a scaled plane's), a coordinate the projection sends to about 0
+		 * keeps a residue of the order of the original coordinate's rounding. */
 		sp->p = vsub(p, vscale(pl->normal, vdot(pl->normal, p) - pl->offset));
-		sp->p_err = vscale(vadd(vabs(sp->p), v3s(fabs(pl->offset))), err_gamma(7));
+		sp->p_err = vscale(vadd(vmax(vabs(p), vabs(sp->p)), v3s(fabs(pl->offset))), err_gamma(7));
 		sp->ng = pl->normal;
 		sp->ns = pl->normal;
 		break;
@@ -178,7 +181,7 @@ void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h
 		struct vec3 wa = vscale(a, b0), wb = vscale(b, h->b1), wc = vscale(c, h->b2);
 		sp->p = vadd(vadd(wa, wb), wc);
 		sp->p_err = vscale(vadd(vadd(vabs(wa), vabs(wb)), vabs(wc)), err_gamma(7));
-		sp->ng = vnorm(vcross(vsub(b, a), vsub(c, a)));
+		sp->ng = vunit(vcross(vsub(b, a), vsub(c, a)));
 		if (tri->n[0] == NO_NORMALS) {
 			sp->ns = sp->ng;
 		} else {
