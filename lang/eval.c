@@ -254,6 +254,18 @@ static double norm(const double v[3])
 	return hypot(hypot(v[0], v[1]), v[2]);
 }
 
+/* v / |v| for a nonzero v, divided by its largest component first so that nothing
+ * underflows */
+static void unit(const double v[3], double out[3])
+{
+	double big = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+	for (int k = 0; k < 3; k++)
+		out[k] = v[k] / big;
+	double len = norm(out);
+	for (int k = 0; k < 3; k++)
+		out[k] /= len;
+}
+
 /* ---- statements ---- */
 
 static void eval_camera(struct evaluator *ev, struct ast *s)
@@ -291,15 +303,23 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 	}
 	double dir[3] = { c->look_at[0] - c->location[0], c->look_at[1] - c->location[1],
 	                  c->look_at[2] - c->location[2] };
-	double side[3];
-	cross(c->up, dir, side);
-	if (is_zero(dir))
+	if (is_zero(dir)) {
 		eval_error(ev, at_look ? at_look : at_loc ? at_loc : s, "look_at is the same point as location");
-	else if (is_zero(c->up))
+		return;
+	}
+	if (is_zero(c->up)) {
 		eval_error(ev, at_up ? at_up : s, "up must not be a zero vector");
-	else if (norm(side) <= 1e-12 * norm(c->up) * norm(dir) && at_up) /* relative: scale-free */
+		return;
+	}
+	/* the sine of the angle between unit vectors: scale-free, also for an up or a
+	 * direction of 1e-310 whose products would underflow */
+	double u[3], d[3], side[3];
+	unit(c->up, u);
+	unit(dir, d);
+	cross(u, d, side);
+	if (norm(side) <= 1e-12 && at_up)
 		eval_error(ev, at_up, "up is parallel to the viewing direction");
-	else if (norm(side) <= 1e-12 * norm(c->up) * norm(dir)) /* the default up: blame the direction */
+	else if (norm(side) <= 1e-12) /* the default up: blame the direction */
 		eval_error(ev, at_look ? at_look : at_loc ? at_loc : s,
 		           "the viewing direction is parallel to the default up <0, 1, 0>; give the camera an 'up'");
 }

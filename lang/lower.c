@@ -52,19 +52,41 @@ static struct vec3 xform_point(const struct xform *x, struct vec3 p)
 }
 
 /* The inverse of an affine map (its linear part is invertible: scales are never zero). */
+/* The linear part of x divided by its largest entry (returned), so that its cofactors
+ * and determinant neither underflow nor overflow for a scale of 1e-250 or 1e90. */
+static double scaled_linear(const struct xform *x, double a[3][3])
+{
+	double big = 0;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			big = fmax(big, fabs(x->m[i][j]));
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			a[i][j] = x->m[i][j] / big;
+	return big;
+}
+
+static double det3(const double a[3][3])
+{
+	return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+	       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
 static struct affine affine_inverse(const struct xform *x)
 {
-	const double (*m)[4] = x->m;
+	double a[3][3];
+	double big = scaled_linear(x, a);
 	double c[3][3] = {
-		{ m[1][1] * m[2][2] - m[1][2] * m[2][1], m[0][2] * m[2][1] - m[0][1] * m[2][2], m[0][1] * m[1][2] - m[0][2] * m[1][1] },
-		{ m[1][2] * m[2][0] - m[1][0] * m[2][2], m[0][0] * m[2][2] - m[0][2] * m[2][0], m[0][2] * m[1][0] - m[0][0] * m[1][2] },
-		{ m[1][0] * m[2][1] - m[1][1] * m[2][0], m[0][1] * m[2][0] - m[0][0] * m[2][1], m[0][0] * m[1][1] - m[0][1] * m[1][0] },
+		{ a[1][1] * a[2][2] - a[1][2] * a[2][1], a[0][2] * a[2][1] - a[0][1] * a[2][2], a[0][1] * a[1][2] - a[0][2] * a[1][1] },
+		{ a[1][2] * a[2][0] - a[1][0] * a[2][2], a[0][0] * a[2][2] - a[0][2] * a[2][0], a[0][2] * a[1][0] - a[0][0] * a[1][2] },
+		{ a[1][0] * a[2][1] - a[1][1] * a[2][0], a[0][1] * a[2][0] - a[0][0] * a[2][1], a[0][0] * a[1][1] - a[0][1] * a[1][0] },
 	};
-	double det = m[0][0] * c[0][0] + m[0][1] * c[1][0] + m[0][2] * c[2][0];
+	double det = det3(a);
+	const double (*m)[4] = x->m;
 	struct affine inv;
 	for (int i = 0; i < 3; i++) {
 		for (int j = 0; j < 3; j++)
-			inv.m[i][j] = c[i][j] / det;
+			inv.m[i][j] = c[i][j] / det / big; /* (M / big)^-1 = big M^-1 */
 		inv.m[i][3] = -(inv.m[i][0] * m[0][3] + inv.m[i][1] * m[1][3] + inv.m[i][2] * m[2][3]);
 	}
 	return inv;
@@ -75,10 +97,9 @@ static struct affine affine_inverse(const struct xform *x)
  * points to the side that was the outside (a mirrored closed mesh stays solid). */
 static bool xform_mirrors(const struct xform *x)
 {
-	const double (*m)[4] = x->m;
-	return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-	               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]) <
-	       0;
+	double a[3][3];
+	scaled_linear(x, a);
+	return det3(a) < 0;
 }
 
 /* Normals transform by the inverse transpose of the linear part. */
@@ -142,13 +163,34 @@ static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
 	return (uint32_t)sc->nvertices++;
 }
 
+/* Geometry beyond this distance from the origin is refused: the intersection tests
+ * square coordinates (a sphere's r^2 and |o - c|^2) and multiply three (a triangle's
+ * scaled t), which overflow a double from about 1e102, and an overflow would be a
+ * silently missing object. */
+#define MAX_EXTENT 1e100
+/* ... and a sphere below this radius, whose r^2 would underflow to 0 and meet every ray. */
+#define MIN_RADIUS 1e-100
+
+/* Reports what at `at` when it reaches extent from the origin (after its transforms). */
+static void check_extent(struct lowering *lw, struct span at, const char *what, double extent)
+{
+	if (!(extent <= MAX_EXTENT))
+		diag_error(lw->diag, at, "%s reaches %g from the origin, beyond the limit of 1e100 (its arithmetic would overflow)",
+		           what, extent);
+}
+
+static double extent_of(struct vec3 p)
+{
+	return vmaxc(vabs(p));
+}
+
 /* Adds a triangle unless it has no area (NUMERICS.md section 5); returns whether it did. */
 static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_t n[3], uint32_t surface)
 {
 	struct scene *sc = lw->sc;
 	struct vec3 a = sc->vertices[v[0]], b = sc->vertices[v[1]], c = sc->vertices[v[2]];
 	struct vec3 area = vcross(vsub(b, a), vsub(c, a));
-	if (vzero(area) || !isfinite(vdot(area, area)))
+	if (vzero(area) || !isfinite(area.x) || !isfinite(area.y) || !isfinite(area.z))
 		return false;
 	xgrow((void **)&sc->triangles, &lw->cap_triangles, sc->ntriangles + 1, sizeof *sc->triangles);
 	struct triangle *t = &sc->triangles[sc->ntriangles++];
@@ -246,8 +288,12 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	bool mirrored = xform_mirrors(x);
 	uint32_t surface = add_surface(lw, o);
 	uint32_t base = (uint32_t)sc->nvertices;
-	for (size_t i = 0; i < data->nvertices; i++)
-		add_vertex(lw, xform_point(x, v3a(data->vertices[i])));
+	double extent = 0;
+	for (size_t i = 0; i < data->nvertices; i++) {
+		uint32_t v = add_vertex(lw, xform_point(x, v3a(data->vertices[i])));
+		extent = fmax(extent, extent_of(sc->vertices[v]));
+	}
+	check_extent(lw, *at, "this mesh", extent);
 
 	uint32_t nbase = (uint32_t)sc->nnormals;
 	if (o->smooth) {
@@ -306,30 +352,40 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 	switch (o->kind) {
 	case OBJ_SPHERE: {
 		/* only uniform scales reach a sphere: any column's length is the scale */
-		double scale = vlen(v3(x->m[0][0], x->m[1][0], x->m[2][0]));
+		double scale = hypot(hypot(x->m[0][0], x->m[1][0]), x->m[2][0]); /* no underflow at 1e-250 */
 		xgrow((void **)&sc->spheres, &lw->cap_spheres, sc->nspheres + 1, sizeof *sc->spheres);
 		struct sphere *s = &sc->spheres[sc->nspheres++];
 		s->center = xform_point(x, v3a(o->u.sphere.center));
 		s->radius = o->u.sphere.radius * scale;
 		s->surface = add_surface(lw, o);
+		check_extent(lw, o->span, "this sphere", extent_of(s->center) + s->radius);
+		if (!(s->radius >= MIN_RADIUS))
+			diag_error(lw->diag, o->span,
+			           "this sphere's radius is %g, below the limit of 1e-100 (its square would underflow)",
+			           s->radius);
 		break;
 	}
 	case OBJ_PLANE: {
-		struct vec3 n = vnorm(v3a(o->u.plane.normal));
+		struct vec3 n = vunit(v3a(o->u.plane.normal));
 		struct vec3 on = xform_point(x, vscale(n, o->u.plane.offset)); /* a point of the plane */
 		struct affine inv = affine_inverse(x);
-		struct vec3 wn = vnorm(xform_normal(&inv, n));
+		struct vec3 wn = vunit(xform_normal(&inv, n));
 		xgrow((void **)&sc->planes, &lw->cap_planes, sc->nplanes + 1, sizeof *sc->planes);
 		struct plane *p = &sc->planes[sc->nplanes++];
 		p->normal = wn;
 		p->offset = vdot(wn, on);
 		p->surface = add_surface(lw, o);
+		check_extent(lw, o->span, "this plane", fabs(p->offset));
 		break;
 	}
 	case OBJ_TRIANGLE: {
 		uint32_t v[3], n[3] = { NO_NORMALS, NO_NORMALS, NO_NORMALS };
-		for (int k = 0; k < 3; k++)
+		double extent = 0;
+		for (int k = 0; k < 3; k++) {
 			v[k] = add_vertex(lw, xform_point(x, v3a(o->u.triangle.v[k])));
+			extent = fmax(extent, extent_of(sc->vertices[v[k]]));
+		}
+		check_extent(lw, o->span, "this triangle", extent);
 		if (xform_mirrors(x)) {
 			uint32_t t = v[1];
 			v[1] = v[2];
@@ -416,15 +472,18 @@ enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struc
 
 	const struct camera_desc *c = &desc->camera;
 	camera_setup(&out->camera, v3a(c->location), v3a(c->look_at), v3a(c->up), c->fov, c->width, c->height);
+	check_extent(&lw, c->span, "the camera", fmax(extent_of(v3a(c->location)), extent_of(v3a(c->look_at))));
 	out->lights = xcalloc(desc->nlights, sizeof *out->lights);
 	for (size_t i = 0; i < desc->nlights; i++) {
 		const struct light_desc *l = &desc->lights[i];
 		struct light *li = &out->lights[out->nlights++];
 		li->kind = l->directional ? LIGHT_DIRECTIONAL : LIGHT_POINT;
 		li->pos = v3a(l->vec);
-		li->to_light = l->directional ? vneg(vnorm(v3a(l->vec))) : v3s(0);
+		li->to_light = l->directional ? vneg(vunit(v3a(l->vec))) : v3s(0);
 		li->color = vscale(v3a(l->color), l->intensity);
 		li->shadowless = l->shadowless;
+		if (!l->directional)
+			check_extent(&lw, l->span, "this light", extent_of(li->pos));
 	}
 
 	lw.material_map = xmalloc((desc->nmaterials ? desc->nmaterials : 1) * sizeof *lw.material_map);

@@ -8,8 +8,8 @@ void camera_setup(struct camera *c, struct vec3 eye, struct vec3 look_at, struct
                   int width, int height)
 {
 	c->eye = eye;
-	c->dir = vnorm(vsub(look_at, eye));
-	c->right = vnorm(vcross(up, c->dir));
+	c->dir = vunit(vsub(look_at, eye));
+	c->right = vunit(vcross(vunit(up), c->dir));
 	c->up = vcross(c->dir, c->right);
 	c->tan_half = tan(fov * (M_PI / 360));
 	c->width = width;

@@ -26,6 +26,14 @@ static inline struct vec3 vcross(struct vec3 a, struct vec3 b)
 static inline double vlen(struct vec3 a) { return sqrt(vdot(a, a)); }
 /* Unit vector along a; a must not be zero. */
 static inline struct vec3 vnorm(struct vec3 a) { return vscale(a, 1 / vlen(a)); }
+/* Unit vector along a for any finite nonzero a, also one whose squared length under- or
+ * overflows (a direction of 1e-310 or 1e200): a is first divided by its largest
+ * component. For directions given by a scene, not for the hot path. */
+static inline struct vec3 vunit(struct vec3 a)
+{
+	double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+	return vnorm(v3(a.x / m, a.y / m, a.z / m));
+}
 static inline struct vec3 vmin(struct vec3 a, struct vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
 static inline struct vec3 vmax(struct vec3 a, struct vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
 static inline double vget(struct vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
