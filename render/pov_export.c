@@ -100,10 +100,17 @@ static void vec(FILE *f, struct vec3 v)
 	fputc('>', f);
 }
 
-/* A vector in single precision, as mesh2 stores it: %.9g reads back as the same float. */
+/* A vector in single precision, as mesh2 stores it: %.9g reads back as the same float.
+ * A component beyond float's range is written as the double it is (never "inf", which
+ * POV-Ray cannot parse): what POV-Ray makes of it is then its own doing. */
 static void fvec(FILE *f, struct vec3 v)
 {
-	fprintf(f, "<%.9g,%.9g,%.9g>", (double)(float)v.x, (double)(float)v.y, (double)(float)v.z);
+	double c[3] = { v.x, v.y, v.z };
+	for (int k = 0; k < 3; k++) {
+		float single = (float)c[k];
+		fprintf(f, isfinite(single) ? "%s%.9g" : "%s%.17g", k ? "," : "<", isfinite(single) ? (double)single : c[k]);
+	}
+	fputc('>', f);
 }
 
 /* A colour with a fourth channel (filter or transmit). */
