@@ -20,3 +20,4 @@ include tests/render/local.mk
 include tests/pov/local.mk
 include tests/faults/local.mk
 include tests/valgrind/local.mk
+include tests/extreme/local.mk
