@@ -9,6 +9,7 @@
 EXTREME_TESTS = \
 	tests/extreme/axis_rays_neg.scn \
 	tests/extreme/axis_rays_pos.scn \
+	tests/extreme/axis_rays_x.scn \
 	tests/extreme/coplanar.scn \
 	tests/extreme/cube_corner.scn \
 	tests/extreme/degenerate.scn \
@@ -45,6 +46,7 @@ EXTREME_TESTS = \
 	tests/extreme/offset_3p7e7.scn \
 	tests/extreme/offset_scale.scn \
 	tests/extreme/overflow.scn \
+	tests/extreme/prism_tir.scn \
 	tests/extreme/scale_1e-4.scn \
 	tests/extreme/scale_1e-90.scn \
 	tests/extreme/scale_1e5.scn \
@@ -59,6 +61,7 @@ TESTS += $(EXTREME_TESTS)
 EXTREME_EXPECT = \
 	tests/extreme/axis_rays_neg.expect \
 	tests/extreme/axis_rays_pos.expect \
+	tests/extreme/axis_rays_x.expect \
 	tests/extreme/coplanar.expect \
 	tests/extreme/cube_corner.expect \
 	tests/extreme/degenerate.expect \
@@ -90,6 +93,7 @@ EXTREME_EXPECT = \
 	tests/extreme/offset_1e9.expect \
 	tests/extreme/offset_3p7e7.expect \
 	tests/extreme/offset_scale.expect \
+	tests/extreme/prism_tir.expect \
 	tests/extreme/scale_1e-4.expect \
 	tests/extreme/scale_1e-90.expect \
 	tests/extreme/scale_1e5.expect \
