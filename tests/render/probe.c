@@ -11,6 +11,7 @@
  *   twin FILE.scn TOL N     the image has the size of TWIN (the render of FILE.scn,
  *                           made by the caller) and at most N of its pixels differ from
  *                           TWIN's by more than TOL in some channel
+ * Text after a check's numbers is a label for people (tests/extreme/compare-pov shows it).
  * Usage: probe IMAGE STATS EXPECT [TWIN]. Prints every mismatch; exits 1 on any. */
 #include <inttypes.h>
 #include <math.h>
@@ -135,7 +136,7 @@ int main(int argc, char **argv)
 			const float *p = &img->rgb[3 * ((size_t)y * (size_t)img->width + (size_t)x)];
 			double got[3] = { p[0], p[1], p[2] };
 			char what[64];
-			snprintf(what, sizeof what, "pixel %d %d", x, y);
+			snprintf(what, sizeof what, "line %d: pixel %d %d", lineno, x, y);
 			pixel_check(img, what, got, &v[2], v[5]);
 		} else if (sscanf(line, "mean %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]) == 4) {
 			double sum[3] = { 0, 0, 0 };
