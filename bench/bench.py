@@ -224,7 +224,7 @@ def print_scaling(table, runs):
 
 
 def plot_scaling(table, svg):
-    subprocess.run(["make", "-s", "-C", TOP, "bench/plot_csv"], check=True)
+    subprocess.run(["make", "-s", "-C", TOP, "bench/plot_csv"], check=True, stdout=subprocess.DEVNULL)
     lines = ["title scn render time against scene size (640x480, 1 spp, -j %d)" % THREADS,
              "subtitle N spheres at random in a box; the render phase only (--stats), not parse or build",
              "xlabel spheres", "ylabel render time (s)"]
@@ -252,28 +252,29 @@ def embree(work):
 
 
 def converge():
-    log("bench: scn converge examples/whitted.scn (a few minutes)")
-    p = subprocess.run([SCN, "converge", os.path.join(TOP, "examples", "whitted.scn")], capture_output=True,
-                       text=True, check=True)
+    log("bench: scn converge examples/whitted.scn --budget 300 (about 5 minutes)")
+    p = subprocess.run([SCN, "converge", os.path.join(TOP, "examples", "whitted.scn"), "--budget", "300"],
+                       capture_output=True, text=True, check=True)
     last = p.stdout.strip().splitlines()[-1]
-    print("scn converge examples/whitted.scn, last line: " + last)
+    print("scn converge examples/whitted.scn --budget 300, its last line: " + last)
 
 
 def main():
     ap = argparse.ArgumentParser(prog="bench/run", description="scn's benchmarks")
     ap.add_argument("--quick", action="store_true", help="one run of each, not three")
     ap.add_argument("--runs", type=int, help="runs of each measurement (default 3, --quick 1)")
-    ap.add_argument("--full", action="store_true", help="also scn converge examples/whitted.scn (minutes)")
-    ap.add_argument("--only", choices=["table", "scaling", "embree"], action="append",
-                    help="run only these parts (repeatable); default: all three")
+    ap.add_argument("--full", action="store_true", help="also scn converge examples/whitted.scn (5 minutes)")
+    ap.add_argument("--only", choices=["table", "converge", "scaling", "embree"], action="append",
+                    help="run only these parts (repeatable); default: table, scaling and embree, and converge "
+                         "with --full")
     ap.add_argument("--work", default=os.environ.get("SCN_BENCH_DIR", "/tmp/scn-bench"),
                     help="where scenes, meshes and images go (default /tmp/scn-bench)")
     ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
     a = ap.parse_args()
     runs = a.runs or (1 if a.quick else 3)
-    parts = a.only or ["table", "scaling", "embree"]
+    parts = a.only or ["table", "scaling", "embree"] + (["converge"] if a.full else [])
     os.makedirs(a.work, exist_ok=True)
-    subprocess.run(["make", "-s", "-C", TOP, "scn"], check=True)
+    subprocess.run(["make", "-s", "-C", TOP, "scn"], check=True, stdout=subprocess.DEVNULL)
     with open("/proc/loadavg") as f:
         print("load average at the start: " + " ".join(f.read().split()[:3]) + "; %d cores" % os.cpu_count())
     t0 = time.time()
@@ -281,8 +282,10 @@ def main():
         table_scenes = make_scenes(a.work)
     if "table" in parts:
         print_scene_table(scene_table(a.work, runs, table_scenes), runs)
-        if a.full:
-            converge()
+        print()
+        sys.stdout.flush()
+    if "converge" in parts:
+        converge()
         print()
         sys.stdout.flush()
     if "embree" in parts:
