@@ -182,7 +182,7 @@ def print_scene_table(rows, runs):
 
 SCALING_N = [10, 100, 1000, 10000, 100000, 1000000]
 ACCELS = [("bvh", "#1f77b4", "solid"), ("grid", "#2ca02c", "solid"), ("none", "#d62728", "dashed")]
-ACCEL_NAMES = {"bvh": "--accel bvh", "grid": "--accel grid (uniform grid)", "none": "--accel none (brute force)"}
+ACCEL_NAMES = {"bvh": "--accel bvh", "grid": "--accel grid", "none": "--accel none"}
 
 
 def scaling(work, runs):
