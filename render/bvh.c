@@ -361,6 +361,8 @@ static void *worker(void *arg)
 		struct task *t = &b->tasks[i];
 		t->max_depth = t->depth;
 		t->result = build(b, &t->nodes, NO_PARENT, 0, t->first, t->n, t->depth, &t->max_depth);
+		if (t->nodes.n) /* trimmed: bvh_bytes counts the nodes twice, not four times */
+			t->nodes.v = xrealloc(t->nodes.v, t->nodes.n * sizeof *t->nodes.v);
 	}
 }
 
@@ -383,10 +385,16 @@ static void run_tasks(struct builder *b, int threads)
  * the slot the top split left for it. */
 static void join_tasks(struct builder *b, struct bvh *bvh, struct node_vec *top)
 {
+	size_t total = top->n;
+	for (size_t i = 0; i < b->ntasks; i++)
+		total += b->tasks[i].nodes.n;
+	if (total > top->cap) { /* exactly: this array is the tree's */
+		top->v = xrealloc(top->v, total * sizeof *top->v);
+		top->cap = total;
+	}
 	for (size_t i = 0; i < b->ntasks; i++) {
 		struct task *t = &b->tasks[i];
 		uint32_t base = (uint32_t)top->n;
-		xgrow((void **)&top->v, &top->cap, top->n + t->nodes.n, sizeof *top->v);
 		for (size_t k = 0; k < t->nodes.n; k++) {
 			struct bvh_node nd = t->nodes.v[k];
 			for (int c = 0; c < 2; c++)
@@ -454,7 +462,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 uint64_t bvh_bytes(uint64_t n)
 {
 	/* build records, prims, and the nodes (one primitive a leaf: n - 1 of them) twice
-	 * over while the workers' nodes join the top ones */
+	 * over: the workers' arrays, each trimmed to its nodes, and the joined one */
 	return n * (sizeof(struct build_ref) + sizeof(uint32_t) + 2 * sizeof(struct bvh_node));
 }
 
