@@ -57,7 +57,7 @@ EXTREME_TESTS = \
 	tests/extreme/tiny_radius.scn \
 	tests/extreme/tiny_sphere_2e-6.scn \
 	tests/extreme/tiny_sphere_5e-6.scn
-TESTS += $(EXTREME_TESTS)
+TESTS += $(EXTREME_TESTS) tests/extreme/accel-grid.sh
 EXTREME_EXPECT = \
 	tests/extreme/axis_rays_neg.expect \
 	tests/extreme/axis_rays_pos.expect \
@@ -106,7 +106,7 @@ EXTREME_EXPECT = \
 EXTREME_REFUSED = tests/extreme/huge_mesh.err tests/extreme/huge_sphere.err tests/extreme/literal_1e400.err \
 	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err tests/extreme/tiny_radius.err
 EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
-	tests/extreme/run-extreme tests/extreme/compare-pov \
+	tests/extreme/run-extreme tests/extreme/compare-pov tests/extreme/accel-grid.sh \
 	tests/extreme/world.inc tests/extreme/ground.inc tests/extreme/dark.inc tests/extreme/grazing.inc \
 	tests/extreme/axis_grid.inc tests/extreme/subnormal_dirs.inc \
 	tests/extreme/grazing_sphere_twin.scn \
