@@ -221,6 +221,39 @@ static const char *find_channels(const exr_attr_chlist_t *list, struct exr_sourc
 	return NULL;
 }
 
+/* The bytes of pixel data per pixel that the channels take in the file. */
+static double file_bytes_per_pixel(const exr_attr_chlist_t *list)
+{
+	double n = 0;
+	for (int i = 0; i < list->num_channels; i++) {
+		const exr_attr_chlist_entry_t *e = &list->entries[i];
+		int64_t per_sample = (int64_t)e->x_sampling * e->y_sampling;  /* pixels */
+		n += (e->pixel_type == EXR_PIXEL_HALF ? 2.0 : 4.0) / (per_sample > 0 ? per_sample : 1);
+	}
+	return n;
+}
+
+/* The most bytes of pixels one byte of a chunk decodes to, by compression (bounds, with
+ * margin above what constant images reach): zlib's 1032:1 for ZIP and ZIPS, and for
+ * PXR24, whose 24-bit floats add 4:3; RLE's 128-byte run in 2 bytes; PIZ's Huffman runs
+ * (256 values of 16 bits in 10 bits) stay below zlib's; B44 packs a 4 x 4 block of
+ * halves (32 bytes) into 14, B44A a flat one into 3; DWA (which OpenEXR 3.1's C API
+ * cannot decode) can leave an 8 x 8 block of halves to one zlib-packed value. */
+static unsigned max_ratio(exr_compression_t c)
+{
+	switch (c) {
+	case EXR_COMPRESSION_NONE: return 1;
+	case EXR_COMPRESSION_RLE: return 64;
+	case EXR_COMPRESSION_ZIPS:
+	case EXR_COMPRESSION_ZIP:
+	case EXR_COMPRESSION_PIZ: return 1032;
+	case EXR_COMPRESSION_PXR24: return 1376;
+	case EXR_COMPRESSION_B44: return 3;
+	case EXR_COMPRESSION_B44A: return 11;
+	default: return 64 * 1032;
+	}
+}
+
 /* Decodes one chunk into the image: out points at the chunk's top-left pixel. The
  * pipeline is set up on the first chunk (*started) and updated for the others; every
  * chunk gets the same layout, interleaved float RGB with the image's row stride, and
@@ -269,6 +302,7 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 	exr_storage_t storage;
 	exr_attr_box2i_t dw;
 	const exr_attr_chlist_t *chans;
+	exr_compression_t compression;
 	struct exr_source src;
 	int64_t w = 0, h = 0;
 
@@ -279,6 +313,8 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 		rv = exr_get_data_window(ctx, 0, &dw);
 	if (rv == EXR_ERR_SUCCESS)
 		rv = exr_get_channels(ctx, 0, &chans);
+	if (rv == EXR_ERR_SUCCESS)
+		rv = exr_get_compression(ctx, 0, &compression);
 	if (rv != EXR_ERR_SUCCESS)
 		goto done;
 	if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED) {
@@ -289,7 +325,8 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 		goto done;
 	w = (int64_t)dw.max.x - dw.min.x + 1;
 	h = (int64_t)dw.max.y - dw.min.y + 1;
-	if ((rc = image_alloc_for_read(w, h, path, out, err, errlen)) != 0)
+	if ((rc = image_alloc_for_read(w, h, fd, (double)w * h * file_bytes_per_pixel(chans),
+	                               max_ratio(compression), path, out, err, errlen)) != 0)
 		goto done;
 	float *rgb = (*out)->rgb;
 

@@ -98,29 +98,36 @@ float *image_decode_table(unsigned maxval, double gamma)
 	return t;
 }
 
-int image_alloc_for_read(int64_t width, int64_t height, const char *path, struct image **out,
-                         char *err, size_t errlen)
+int image_alloc_for_read(int64_t width, int64_t height, int fd, double data_bytes,
+                         unsigned max_ratio, const char *path, struct image **out, char *err,
+                         size_t errlen)
 {
 	*out = NULL;
-	bool sized = width > 0 && height > 0 && width <= INT32_MAX && height <= INT32_MAX;
-	char need[128];
-	if (sized && width * height <= IMAGE_MAX_PIXELS && !memory_fits(image_bytes(width, height), need, sizeof need)) {
-		snprintf(err, errlen, "cannot read '%s': its %lld x %lld image %s", path, (long long)width,
-		         (long long)height, need);
-		return ENOMEM;
-	}
-	if (sized)
-		*out = image_new((int)width, (int)height);
-	if (*out)
-		return 0;
 	if (width <= 0 || height <= 0) {
 		snprintf(err, errlen, "cannot read '%s': invalid image size %lld x %lld", path,
 		         (long long)width, (long long)height);
 		return EINVAL;
 	}
-	snprintf(err, errlen, "cannot read '%s': image too large (%lld x %lld pixels; at most %lld)",
-	         path, (long long)width, (long long)height, (long long)IMAGE_MAX_PIXELS);
-	return EFBIG;
+	if (width > INT32_MAX || height > INT32_MAX || width * height > IMAGE_MAX_PIXELS) {
+		snprintf(err, errlen, "cannot read '%s': image too large (%lld x %lld pixels; at most %lld)",
+		         path, (long long)width, (long long)height, (long long)IMAGE_MAX_PIXELS);
+		return EFBIG;
+	}
+	char need[128];
+	if (!memory_fits(image_bytes(width, height), need, sizeof need)) {
+		snprintf(err, errlen, "cannot read '%s': its %lld x %lld image %s", path, (long long)width,
+		         (long long)height, need);
+		return ENOMEM;
+	}
+	struct stat st;    /* a pipe has no size to go by */
+	if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && data_bytes > (double)st.st_size * max_ratio) {
+		snprintf(err, errlen, "cannot read '%s': truncated or corrupt file: %lld x %lld pixels "
+		         "cannot fit in its %lld bytes", path, (long long)width, (long long)height,
+		         (long long)st.st_size);
+		return EINVAL;
+	}
+	*out = image_new((int)width, (int)height);
+	return 0;
 }
 
 int image_write_all(int fd, const void *buf, size_t n)

@@ -115,8 +115,12 @@ int image_write_all(int fd, const void *buf, size_t n);
 float *image_decode_table(unsigned maxval, double gamma);
 /* image_new for a size read from a file's header; if it refuses, EINVAL (no pixels),
  * EFBIG (too many) or ENOMEM (more than the machine has: memory.h) with the message
- * naming path in err. */
-int image_alloc_for_read(int64_t width, int64_t height, const char *path, struct image **out,
-                         char *err, size_t errlen);
+ * naming path in err. data_bytes is how many bytes of pixel data the header implies;
+ * the file, open at fd, must be able to hold them at max_ratio to 1, its format's best
+ * compression, or it is refused (EINVAL) before anything is allocated: a few bytes that
+ * claim 2^28 pixels would cost 3 GiB. */
+int image_alloc_for_read(int64_t width, int64_t height, int fd, double data_bytes,
+                         unsigned max_ratio, const char *path, struct image **out, char *err,
+                         size_t errlen);
 
 #endif

@@ -208,6 +208,8 @@ int image_png_read(int fd, const char *path, struct image **out, char *err, size
 	png_uint_32 w, h;
 	int depth, color;
 	png_get_IHDR(png, info, &w, &h, &depth, &color, NULL, NULL, NULL);
+	/* the rows as stored, each after its filter byte, before any conversion */
+	double data_bytes = (double)h * ((double)png_get_rowbytes(png, info) + 1);
 	double gamma = 0;              /* 0: the sRGB curve */
 	png_fixed_point file_gamma;
 	if (!png_get_valid(png, info, PNG_INFO_sRGB) && png_get_valid(png, info, PNG_INFO_gAMA) &&
@@ -229,7 +231,8 @@ int image_png_read(int fd, const char *path, struct image **out, char *err, size
 	    png_get_rowbytes(png, info) != (size_t)w * 3 * bps)
 		png_error(png, "unexpected pixel layout after conversion to RGB");
 
-	int rc = image_alloc_for_read(w, h, path, out, err, errlen);
+	/* deflate packs 1032 bytes into one at best */
+	int rc = image_alloc_for_read(w, h, io->fd, data_bytes, 1032, path, out, err, errlen);
 	if (rc != 0) {
 		png_destroy_read_struct(&png, &info, NULL);
 		io_free(io);

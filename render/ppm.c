@@ -149,7 +149,8 @@ int image_ppm_read(int fd, const char *path, bool linear, struct image **out, ch
 	if (what || r->error)
 		goto done;
 	/* the one white space byte after maxval, read above as `after`, ends the header */
-	if ((rc = image_alloc_for_read(w, h, path, out, err, errlen)) != 0)
+	if ((rc = image_alloc_for_read(w, h, fd, (double)w * h * 3 * (maxval > 255 ? 2 : 1), 1, path, out,
+	                               err, errlen)) != 0)
 		goto done;
 
 	size_t bps = maxval > 255 ? 2 : 1;
