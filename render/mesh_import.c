@@ -2,12 +2,10 @@
  * double precision (assimp stores float, so a file's values keep float precision at best). */
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 
 #include <assimp/cimport.h>
 #include <assimp/config.h>
@@ -16,6 +14,7 @@
 
 #include "cleanup.h"
 #include "memory.h"
+#include "mesh_header.h"
 #include "mesh_import.h"
 #include "xalloc.h"
 
@@ -44,68 +43,12 @@ static const int removed_components = aiComponent_TANGENTS_AND_BITANGENTS | aiCo
 	aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS | aiComponent_TEXTURES |
 	aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_MATERIALS;
 
-/* How much of a PLY file we search for the end of its header (see check_file). */
-#define PLY_HEADER_MAX 65536
-
 /* What a scene's normals are good for. */
 enum normals {
 	NORMALS_NONE,                  /* no triangle mesh has any */
 	NORMALS_USABLE,                /* every triangle corner has a finite nonzero one */
 	NORMALS_BROKEN                 /* some have, some lack, or some are zero or not finite */
 };
-
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-	return 1;
-}
-
-/* Whether one of the first n bytes of head starts a line that is "end_header", give or
- * take blanks, as assimp's PLY reader looks for it. */
-static bool ply_header_ends(const char *head, size_t n)
-{
-	static const char token[] = "end_header";
-	const size_t len = sizeof token - 1;
-	for (size_t i = 0; i < n; i++) {
-		if (i > 0 && head[i - 1] != '\n')
-			continue;
-		size_t j = i;
-		while (j < n && (head[j] == ' ' || head[j] == '\t'))
-			j++;
-		if (n - j >= len && memcmp(head + j, token, len) == 0 &&
-		    (n - j == len || memchr(" \t\r\n\f", head[j + len], 6)))
-			return true;
-	}
-	return false;
-}
-
-/* Checks that path can be read, and that a PLY file's header ends: assimp 5.2's PLY reader
- * loops forever on a header without an end_header line, as in a file cut short inside its
- * header. Returns 0, or fills err and returns 1. Opening a directory succeeds; reading it
- * does not. assimp's own message for an unreadable file ("Unable to open file") says
- * neither which file nor why. */
-static int check_file(const char *path, char *err, size_t errlen)
-{
-	FILE *f = fopen(path, "rb");
-	if (!f)
-		return fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(errno));
-	char *head = xmalloc(PLY_HEADER_MAX);
-	errno = 0;
-	size_t n = fread(head, 1, PLY_HEADER_MAX, f);
-	int e = ferror(f) ? (errno ? errno : EIO) : 0;
-	fclose(f);
-	int rc = 0;
-	if (e)
-		rc = fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(e));
-	else if (n >= 3 && strncasecmp(head, "ply", 3) == 0 && !ply_header_ends(head, n))
-		rc = fail(err, errlen, "malformed mesh file '%s': the PLY header has no end_header line%s", path,
-		          n == PLY_HEADER_MAX ? " in its first 64 KiB" : "");
-	free(head);
-	return rc;
-}
 
 /* The length of msg without its trailing blanks and full stop, since our messages end
  * without one; long messages are cut. */
@@ -129,7 +72,7 @@ static int malformed(const char *path, char *err, size_t errlen)
 	}
 	if (!msg || !*msg)
 		msg = "the reader gives no reason";
-	return fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);
+	return mesh_fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);
 }
 
 /* Whether assimp's reader alone, without validation or post-processing, reads path and
@@ -165,15 +108,15 @@ static int set_primitive_types(const struct aiScene *sc, const char *path, char 
 		for (unsigned j = 0; j < m->mNumFaces; j++) {
 			unsigned n = m->mFaces[j].mNumIndices;
 			if (n == 0)
-				return fail(err, errlen, "malformed mesh file '%s': face %u has no vertices "
-				            "(is the file cut short?)", path, j + 1);
+				return mesh_fail(err, errlen, "malformed mesh file '%s': face %u has no vertices "
+						 "(is the file cut short?)", path, j + 1);
 			types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE :
 			         n == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
 		}
 		m->mPrimitiveTypes = types;
 		polygons = polygons || (types & (aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON));
 	}
-	return polygons ? 0 : fail(err, errlen, "no triangles in '%s'", path);
+	return polygons ? 0 : mesh_fail(err, errlen, "no triangles in '%s'", path);
 }
 
 /* Whether the second stage's memory fits the machine (memory.h). When it runs out,
@@ -194,8 +137,8 @@ static bool second_stage_fits(const struct aiScene *sc, const char *path, char *
 	char msg[160];
 	if (memory_fits(PER_VERTEX * vertices + PER_CORNER * corners, msg, sizeof msg))
 		return true;
-	fail(err, errlen, "reading mesh file '%s' (%llu vertices, %llu face corners) %s", path,
-	     (unsigned long long)vertices, (unsigned long long)corners, msg);
+	mesh_fail(err, errlen, "reading mesh file '%s' (%llu vertices, %llu face corners) %s", path,
+		  (unsigned long long)vertices, (unsigned long long)corners, msg);
 	return false;
 }
 
@@ -214,7 +157,7 @@ static const struct aiScene *import(const char *path, bool drop_normals, bool *t
 	if (!sc) {
 		malformed(path, err, errlen); /* before the second read overwrites the message */
 		if (reader_finds_no_polygons(path))
-			fail(err, errlen, "no triangles in '%s'", path);
+			mesh_fail(err, errlen, "no triangles in '%s'", path);
 		return NULL;
 	}
 	if (set_primitive_types(sc, path, err, errlen)) {
@@ -319,7 +262,7 @@ static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_
 int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errlen)
 {
 	memset(out, 0, sizeof *out);
-	if (check_file(path, err, errlen))
+	if (mesh_header_check(path, err, errlen))
 		return 1;
 	bool too_big = false;
 	const struct aiScene *sc = import(path, false, &too_big, err, errlen);
@@ -342,13 +285,13 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 			nv += sc->mMeshes[i]->mNumVertices;
 	if (nv > UINT32_MAX) {
 		aiReleaseImport(sc);
-		return fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
-		            (unsigned long)UINT32_MAX);
+		return mesh_fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
+				 (unsigned long)UINT32_MAX);
 	}
 	copy_scene(sc, normals == NORMALS_USABLE, out);
 	aiReleaseImport(sc);
 	if (out->nfaces == 0)
-		return fail(err, errlen, "no triangles in '%s'", path);
+		return mesh_fail(err, errlen, "no triangles in '%s'", path);
 	return 0;
 }
 

@@ -36,7 +36,8 @@ TESTS += tests/unit/test_shape
 tests_unit_test_shape_SOURCES = tests/unit/test_shape.c
 tests_unit_test_shape_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
 tests_unit_test_shape_LDADD = $(RENDER_LIBS)
-EXTRA_DIST += tests/unit/meshes/cut_faces.ply tests/unit/meshes/no_end_header.ply
+EXTRA_DIST += tests/unit/meshes/cut_faces.ply tests/unit/meshes/no_end_header.ply \
+	tests/unit/meshes/empty_faces.ply
 check_PROGRAMS += tests/unit/test_imgdiff
 TESTS += tests/unit/test_imgdiff
 tests_unit_test_imgdiff_SOURCES = tests/unit/test_imgdiff.c

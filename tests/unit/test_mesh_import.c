@@ -292,8 +292,25 @@ static void test_errors(void)
 	expect_error(fixture("lines.obj"), false, "no triangles in '", NULL);
 	/* assimp's PLY reader would loop forever on this one */
 	expect_error(fixture("no_end_header.ply"), false, "malformed mesh file '", "end_header");
+	/* and would ask for gigabytes for a header's counts that the file cannot hold */
+	expect_error(fixture("cut_faces.ply"), false, "malformed mesh file '",
+	             "its PLY header declares 2 'face' elements, more than its 25 bytes can hold");
+	/* the same for an OFF header; the keyword is read as assimp reads it */
+	static const char *const off[] = { "OFF\n# big\n1000 2000 0\n0 0 0\n", "CnOFF 3\n1000 2000\n",
+		"OFF1000 2000 0\n0 0 0\n", "1000 2000 0\n" };
+	char tmp[] = "/tmp/scn-test-mesh-XXXXXX", path[64];
+	CHECK(mkdtemp(tmp) != NULL);
+	snprintf(path, sizeof path, "%s/big.off", tmp);
+	for (size_t i = 0; i < sizeof off / sizeof *off; i++) {
+		FILE *f = fopen(path, "w");
+		CHECK(f && fputs(off[i], f) >= 0 && fclose(f) == 0);
+		expect_error(path, false, "malformed mesh file '",
+		             "its OFF header declares 1000 vertices and 2000 faces, more than its");
+	}
+	unlink(path);
+	rmdir(tmp);
 	/* and its Triangulate would abort the process on this one */
-	expect_error(fixture("cut_faces.ply"), false, "malformed mesh file '", "face 1 has no vertices");
+	expect_error(fixture("empty_faces.ply"), false, "malformed mesh file '", "face 1 has no vertices");
 
 	/* a short buffer gets a cut, terminated message */
 	struct mesh_data m;
@@ -311,6 +328,7 @@ static void test_quiet(void)
 		"square.obj", "quad.obj", "normals.obj", "partial_normals.obj", "mixed.obj", "lines.obj",
 		"bad_index.obj", "empty.obj", "ascii.ply", "binary.ply", "bad_number.ply", "truncated.ply",
 		"garbage.bin", "nodes.gltf", "no_such_file.obj", "no_end_header.ply", "cut_faces.ply",
+		"empty_faces.ply",
 	};
 	FILE *tmp = tmpfile();
 	if (!tmp) {
