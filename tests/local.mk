@@ -21,3 +21,4 @@ include tests/pov/local.mk
 include tests/faults/local.mk
 include tests/valgrind/local.mk
 include tests/extreme/local.mk
+include tests/fuzz/local.mk

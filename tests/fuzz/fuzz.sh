@@ -1,0 +1,123 @@
+#!/bin/sh
+# fuzz.sh: `make fuzz`: builds the libFuzzer harnesses with clang (whatever CC the
+# main build uses) and runs each for FUZZ_SECONDS. tests/fuzz/local.mk passes the
+# sources, flags and libraries in the environment; see there. A finding (crash, hang,
+# leak, out-of-memory) is saved under tests/fuzz/findings/HARNESS/ in the build tree and
+# fails the run. New inputs that reach new code go to tests/fuzz/work/HARNESS/ there;
+# the seeds in the source tree are only read.
+set -eu
+
+: "${FUZZ_CC:=clang}" "${FUZZ_SECONDS:=60}" "${FUZZ_TARGETS:=scene mesh png exr}" "${FUZZ_OPTIONS:=}"
+: "${FUZZ_SOURCES:?}" "${FUZZ_LIB_CFLAGS?}" "${FUZZ_LIBS:?}"
+top_srcdir=${top_srcdir:?} top_builddir=${top_builddir:?}
+# clang is needed for this target only, so it is installed here and not by README's
+# first command
+if ! command -v "$FUZZ_CC" >/dev/null 2>&1 && [ "$FUZZ_CC" = clang ] && command -v apt-get >/dev/null; then
+	sudo=
+	[ "$(id -u)" = 0 ] || sudo=sudo
+	echo "fuzz.sh: installing clang, which has libFuzzer"
+	$sudo apt-get install -y clang
+fi
+if ! command -v "$FUZZ_CC" >/dev/null 2>&1; then
+	echo "fuzz.sh: $FUZZ_CC not found; the fuzz target needs clang with libFuzzer" >&2
+	exit 1
+fi
+
+out=$top_builddir/tests/fuzz
+obj=$out/obj
+mkdir -p "$obj"
+flags="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all \
+-std=c11 -Wall -Wextra -ffp-contract=off -pthread -D_XOPEN_SOURCE=700 \
+-I$top_builddir -I$top_builddir/lang -I$top_srcdir -I$top_srcdir/lang -I$top_srcdir/render \
+-I$top_srcdir/tests/fuzz $FUZZ_LIB_CFLAGS"
+
+# The libraries, compiled again with the sanitizers and coverage (only what changed).
+objs=
+for s in $FUZZ_SOURCES; do
+	case $s in
+	*.c) ;;
+	*.l|*.y) s=${s%.?}.c ;;   # flex and bison output, made by the main build
+	*) continue ;;
+	esac
+	src=$top_builddir/$s
+	[ -f "$src" ] || src=$top_srcdir/$s
+	o=$obj/$(echo "$s" | tr / _ | sed 's/\.c$/.o/')
+	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ "$0" -nt "$o" ]; then
+		echo "  FUZZCC   $s"
+		$FUZZ_CC $flags -fsanitize=fuzzer-no-link -c "$src" -o "$o"
+	fi
+	objs="$objs $o"
+done
+rm -f "$obj/libscn.a"
+ar cr "$obj/libscn.a" $objs
+
+# max_len per format: enough for the seeds and a little more, small enough to stay fast
+max_len() {
+	case $1 in
+	scene) echo 8192 ;;
+	mesh) echo 4096 ;;
+	png) echo 4096 ;;
+	exr) echo 8192 ;;
+	esac
+}
+
+# Seeds that live elsewhere in the tree, copied (the mesh files behind the byte that
+# picks their reader, see fuzz_mesh.c) rather than kept twice in the repository.
+seed() {
+	rm -rf "$out/seed/$1"
+	mkdir -p "$out/seed/$1"
+	case $1 in
+	scene)
+		for f in "$top_srcdir"/examples/*.scn "$top_srcdir"/tests/*/*.scn; do
+			cp "$f" "$out/seed/scene/$(echo "${f#"$top_srcdir"/}" | tr / _)"
+		done ;;
+	mesh)
+		for f in "$top_srcdir"/tests/unit/meshes/*.ply "$top_srcdir"/examples/*.ply; do
+			{ printf 0; cat "$f"; } >"$out/seed/mesh/$(basename "$f")"
+		done
+		for f in "$top_srcdir"/tests/unit/meshes/*.obj; do
+			{ printf 1; cat "$f"; } >"$out/seed/mesh/$(basename "$f")"
+		done ;;
+	esac
+}
+
+# The front end's dictionary: its keywords and built-in functions, read from their
+# tables so that it never falls behind them, and its punctuation.
+scene_dict() {
+	sed -n '/^static const char \*const names/,/^};/p' "$top_srcdir/lang/keywords.c" |
+		grep -o '"[a-z_]*"'
+	grep -o '{ "[a-z0-9]*", [0-9]' "$top_srcdir/lang/builtins.c" | grep -o '"[a-z0-9]*"'
+	for t in '+' '-' '*' '/' '=' '{' '}' '<' '>' '(' ')' ',' '..' '.x' '.y' '.z' '//' '/*' '*/' '"' '1e308' '-0' \
+		'0.5' '1e-9'; do
+		printf '"%s"\n' "$(printf %s "$t" | sed 's/[\\"]/\\&/g')"
+	done
+}
+
+# The harnesses' temporary files go in the build tree: a crash leaves them behind.
+export TMPDIR="$out/tmp"
+mkdir -p "$TMPDIR"
+# assimp's known leak: tests/fuzz/lsan.supp says why its own file
+lsan="suppressions=$top_srcdir/tests/fuzz/lsan.supp:print_suppressions=0"
+
+status=0
+for h in $FUZZ_TARGETS; do
+	bin=$out/fuzz_$h
+	echo "  FUZZLD   tests/fuzz/fuzz_$h"
+	$FUZZ_CC $flags -fsanitize=fuzzer "$top_srcdir/tests/fuzz/fuzz_$h.c" \
+		"$top_srcdir/tests/fuzz/fuzz_file.c" "$obj/libscn.a" $FUZZ_LIBS -lm -o "$bin"
+	[ "$FUZZ_SECONDS" = 0 ] && continue     # build only
+	mkdir -p "$out/work/$h" "$out/findings/$h"
+	seed "$h"
+	dict=
+	if [ "$h" = scene ]; then
+		scene_dict >"$out/scene.dict"
+		dict=-dict=$out/scene.dict
+	fi
+	echo "fuzz.sh: fuzz_$h for $FUZZ_SECONDS s"
+	LSAN_OPTIONS=$lsan nice -n 19 "$bin" -max_total_time="$FUZZ_SECONDS" -rss_limit_mb=2048 -timeout=10 \
+		-max_len="$(max_len "$h")" -print_final_stats=1 $dict \
+		-artifact_prefix="$out/findings/$h/" $FUZZ_OPTIONS \
+		"$out/work/$h" "$top_srcdir/tests/fuzz/corpus/$h" "$out/seed/$h" </dev/null || status=1
+done
+rm -rf "$TMPDIR"
+exit $status

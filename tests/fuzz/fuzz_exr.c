@@ -1,0 +1,7 @@
+/* fuzz_exr.c: libFuzzer harness for the EXR reader (render/exr.c over OpenEXRCore). */
+#include "fuzz_image.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+	return fuzz_image_reader(image_exr_read, "sky.exr", data, size);
+}
