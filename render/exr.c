@@ -257,24 +257,33 @@ static unsigned max_ratio(exr_compression_t c)
 /* Decodes one chunk into the image: out points at the chunk's top-left pixel. The
  * pipeline is set up on the first chunk (*started) and updated for the others; every
  * chunk gets the same layout, interleaved float RGB with the image's row stride, and
- * the library picks its routines for it after each update. */
+ * the library picks its routines for it after each update. The channels we do not use
+ * (A, Z, ...) go to *scratch (grown to the chunk's size, freed by the caller), not
+ * nowhere: when all channels are half, OpenEXR 3.1's fast half-to-float unpackers
+ * (internal_exr_match_decode) write every channel, and one without a destination would
+ * have them write through a null pointer (a file with B, G and Y: found by fuzzing). */
 static exr_result_t decode_chunk(exr_context_t ctx, const exr_chunk_info_t *chunk,
                                  exr_decode_pipeline_t *dec, bool *started,
-                                 const struct exr_source *src, float *out, int width)
+                                 const struct exr_source *src, float *out, int width,
+                                 float **scratch)
 {
 	exr_result_t rv = *started ? exr_decoding_update(ctx, 0, chunk, dec)
 	                           : exr_decoding_initialize(ctx, 0, chunk, dec);
 	if (rv != EXR_ERR_SUCCESS)
 		return rv;
 	*started = true;
+	*scratch = xrealloc(*scratch, (size_t)chunk->width * (size_t)chunk->height * sizeof **scratch);
 	for (int c = 0; c < dec->channel_count; c++) {
 		exr_coding_channel_info_t *ch = &dec->channels[c];
-		ch->decode_to_ptr = NULL;      /* other channels (A, Z, ...) are skipped */
+		ch->decode_to_ptr = (uint8_t *)*scratch;
+		ch->user_pixel_stride = sizeof **scratch;
+		ch->user_line_stride = chunk->width * (int32_t)sizeof **scratch;
 		for (int k = 0; k < (src->grey ? 1 : 3); k++)
-			if (c == src->channel[k])
+			if (c == src->channel[k]) {
 				ch->decode_to_ptr = (uint8_t *)(out + k);
-		ch->user_pixel_stride = 3 * sizeof *out;
-		ch->user_line_stride = width * 3 * (int32_t)sizeof *out;
+				ch->user_pixel_stride = 3 * sizeof *out;
+				ch->user_line_stride = width * 3 * (int32_t)sizeof *out;
+			}
 		ch->user_data_type = EXR_PIXEL_FLOAT;
 		ch->user_bytes_per_element = sizeof *out;
 	}
@@ -297,6 +306,7 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 	exr_context_t ctx = NULL;
 	exr_decode_pipeline_t dec = EXR_DECODE_PIPELINE_INITIALIZER;
 	bool dec_started = false;
+	float *scratch = NULL;         /* see decode_chunk */
 	const char *what = NULL;       /* what is wrong with the file, beyond the library's view */
 	int rc = 0;
 	exr_storage_t storage;
@@ -345,7 +355,8 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 				what = "chunk outside the data window";
 				break;
 			}
-			rv = decode_chunk(ctx, &chunk, &dec, &dec_started, &src, rgb + row * w * 3, (int)w);
+			rv = decode_chunk(ctx, &chunk, &dec, &dec_started, &src, rgb + row * w * 3, (int)w,
+			                  &scratch);
 		}
 	} else {
 		uint32_t tw, th;
@@ -367,7 +378,7 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 					break;
 				}
 				rv = decode_chunk(ctx, &chunk, &dec, &dec_started, &src,
-				                  rgb + (y0 * w + x0) * 3, (int)w);
+				                  rgb + (y0 * w + x0) * 3, (int)w, &scratch);
 			}
 		}
 	}
@@ -383,6 +394,7 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 		}
 	}
 done:
+	free(scratch);
 	if (dec_started)
 		exr_decoding_destroy(ctx, &dec);
 	if (ctx)

@@ -672,6 +672,9 @@ static void test_foreign_exr(void)
 		{ "tile_uint.exr", EXR_PIXEL_UINT, true, "RGB", EXR_COMPRESSION_NONE, 3, -2 },
 		{ "tile_grey.exr", EXR_PIXEL_FLOAT, true, "YA", EXR_COMPRESSION_RLE, 0, 0 },
 		{ "scan_grey.exr", EXR_PIXEL_HALF, false, "Y", EXR_COMPRESSION_PIZ, 0, 0 },
+		/* all half, with channels we skip: OpenEXR's fast unpackers write them too */
+		{ "scan_grey_gb.exr", EXR_PIXEL_HALF, false, "YGB", EXR_COMPRESSION_ZIP, 0, 0 },
+		{ "tile_grey_gb.exr", EXR_PIXEL_HALF, true, "YGB", EXR_COMPRESSION_NONE, 0, 0 },
 	};
 	enum { W = 21, H = 19 };       /* partial tiles and chunks at the edges */
 	for (size_t t = 0; t < sizeof cases / sizeof cases[0]; t++) {
