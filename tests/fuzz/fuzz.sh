@@ -44,12 +44,14 @@ for s in $FUZZ_SOURCES; do
 	o=$obj/$(echo "$s" | tr / _ | sed 's/\.c$/.o/')
 	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ "$0" -nt "$o" ]; then
 		echo "  FUZZCC   $s"
-		$FUZZ_CC $flags -fsanitize=fuzzer-no-link -c "$src" -o "$o"
+		$FUZZ_CC $flags -fsanitize=fuzzer-no-link -c "$src" -o "$o.$$"
+		mv "$o.$$" "$o"        # whole, should another run be linking beside this one
 	fi
 	objs="$objs $o"
 done
-rm -f "$obj/libscn.a"
-ar cr "$obj/libscn.a" $objs
+rm -f "$obj/libscn.a.$$"
+ar cr "$obj/libscn.a.$$" $objs
+mv "$obj/libscn.a.$$" "$obj/libscn.a"
 
 # max_len per format: enough for the seeds and a little more, small enough to stay fast
 max_len() {
@@ -93,9 +95,11 @@ scene_dict() {
 	done
 }
 
-# The harnesses' temporary files go in the build tree: a crash leaves them behind.
-export TMPDIR="$out/tmp"
-mkdir -p "$TMPDIR"
+# The harnesses' temporary files go in the build tree, where a crash leaves them, in a
+# directory of this run's own: another run may be going on beside it.
+mkdir -p "$out/tmp"
+TMPDIR=$(mktemp -d "$out/tmp/run.XXXXXX")
+export TMPDIR
 # assimp's known leak: tests/fuzz/lsan.supp says why its own file
 lsan="suppressions=$top_srcdir/tests/fuzz/lsan.supp:print_suppressions=0"
 
@@ -104,7 +108,8 @@ for h in $FUZZ_TARGETS; do
 	bin=$out/fuzz_$h
 	echo "  FUZZLD   tests/fuzz/fuzz_$h"
 	$FUZZ_CC $flags -fsanitize=fuzzer "$top_srcdir/tests/fuzz/fuzz_$h.c" \
-		"$top_srcdir/tests/fuzz/fuzz_file.c" "$obj/libscn.a" $FUZZ_LIBS -lm -o "$bin"
+		"$top_srcdir/tests/fuzz/fuzz_file.c" "$obj/libscn.a" $FUZZ_LIBS -lm -o "$bin.$$"
+	mv "$bin.$$" "$bin"
 	[ "$FUZZ_SECONDS" = 0 ] && continue     # build only
 	mkdir -p "$out/work/$h" "$out/findings/$h"
 	seed "$h"
