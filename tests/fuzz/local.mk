@@ -1,6 +1,7 @@
 # tests/fuzz/local.mk: fuzzing. `make fuzz` builds the libFuzzer harnesses with clang,
 # apart from the main build and whatever CC it uses, and runs each for FUZZ_SECONDS
-# (fuzz.sh; FUZZ_TARGETS picks harnesses, FUZZ_OPTIONS adds libFuzzer flags). The harness
+# (fuzz.sh; 0 only builds them; FUZZ_TARGETS picks harnesses, FUZZ_OPTIONS adds libFuzzer
+# flags, e.g. "-fork=1 -ignore_crashes=1" to go on after a finding). The harness
 # binaries are not part of `make` or `make check`; the saved corpora and reproducers are:
 # regress.sh replays them through the same harness sources built with the normal
 # compiler and replay.c's main().
