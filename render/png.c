@@ -203,6 +203,16 @@ int image_png_read(int fd, const char *path, struct image **out, char *err, size
 	}
 	png_set_read_fn(png, io, read_fn);
 	png_set_user_limits(png, 0x7fffffff, 0x7fffffff);
+	/* libpng reads an ancillary chunk whole into memory, allocating the length its header
+	 * claims: a tEXt chunk in a 124-byte file claiming 1.6 GB got 1.6 GB (found by
+	 * fuzzing), as Debian's libpng has no limit, and a limit only makes it warn. So
+	 * the chunks libpng would keep and we never use are skipped unread (read past in
+	 * small pieces, not allocated), and iCCP, the one of variable length we let libpng
+	 * read (an sRGB profile can mark the file sRGB), is held to libpng's upstream
+	 * default limit of 8 MB. */
+	static const png_byte unused[] = "tEXt\0zTXt\0iTXt\0sPLT\0eXIf\0pCAL\0sCAL\0";
+	png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, unused, (int)(sizeof unused / 5));
+	png_set_chunk_malloc_max(png, 8000000);
 	png_read_info(png, info);
 
 	png_uint_32 w, h;
