@@ -3,7 +3,7 @@
 # (fuzz.sh; 0 only builds them; FUZZ_TARGETS picks harnesses, FUZZ_OPTIONS adds libFuzzer
 # flags, e.g. "-fork=1 -ignore_crashes=1" to go on after a finding). The harness
 # binaries are not part of `make` or `make check`; the saved corpora and reproducers are:
-# regress.sh replays them through the same harness sources built with the normal
+# replay.sh replays them through the same harness sources built with the normal
 # compiler and replay.c's main().
 FUZZ_CC = clang
 FUZZ_SECONDS = 60
@@ -23,7 +23,7 @@ clean-fuzz:
 		tests/fuzz/scene.dict $(FUZZ_TARGETS:%=tests/fuzz/fuzz_%)
 .PHONY: clean-fuzz
 
-# the harnesses with replay.c's main(), for regress.sh
+# the harnesses with replay.c's main(), for replay.sh
 FUZZ_REPLAY_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render -I$(srcdir)/tests/fuzz
 FUZZ_REPLAY_SOURCES = tests/fuzz/replay.c tests/fuzz/fuzz_file.c tests/fuzz/fuzz.h
 check_PROGRAMS += tests/fuzz/replay_scene tests/fuzz/replay_mesh tests/fuzz/replay_png \
@@ -40,6 +40,6 @@ tests_fuzz_replay_png_LDADD = $(RENDER_LIBS)
 tests_fuzz_replay_exr_SOURCES = tests/fuzz/fuzz_exr.c tests/fuzz/fuzz_image.h $(FUZZ_REPLAY_SOURCES)
 tests_fuzz_replay_exr_CPPFLAGS = $(FUZZ_REPLAY_CPPFLAGS)
 tests_fuzz_replay_exr_LDADD = $(RENDER_LIBS)
-TESTS += tests/fuzz/regress.sh
-EXTRA_DIST += tests/fuzz/regress.sh tests/fuzz/fuzz.sh tests/fuzz/lsan.supp tests/fuzz/corpus \
+TESTS += tests/fuzz/replay.sh
+EXTRA_DIST += tests/fuzz/replay.sh tests/fuzz/fuzz.sh tests/fuzz/lsan.supp tests/fuzz/corpus \
 	tests/fuzz/regress

@@ -1,5 +1,5 @@
 /* replay.c: a main() for a harness built with the normal compiler, for `make check`
- * (tests/fuzz/regress.sh): runs the harness once on each file named on the command line,
+ * (tests/fuzz/replay.sh): runs the harness once on each file named on the command line,
  * as libFuzzer does when given files. A crash or a sanitizer report fails the run. */
 #include <stdio.h>
 #include <stdlib.h>

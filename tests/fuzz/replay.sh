@@ -1,5 +1,5 @@
 #!/bin/sh
-# regress.sh: replays the fuzzers' saved corpora (tests/fuzz/corpus/HARNESS/) and the
+# replay.sh: replays the fuzzers' saved corpora (tests/fuzz/corpus/HARNESS/) and the
 # reproducers of what they found (tests/fuzz/regress/HARNESS/) through each harness built
 # with the normal compiler (replay_HARNESS, see local.mk), so that every finding stays
 # fixed in every build: each file must give a clean run (exit 0: a bad file's error is
