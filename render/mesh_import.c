@@ -61,12 +61,14 @@ static int trimmed(const char *msg)
 }
 
 /* Fills err with assimp's last error, about path, and returns 1. assimp catches its own
- * std::bad_alloc and reports it as an error like any other: that one is running out of
- * memory, status 4 (xalloc.h), not a malformed file. */
+ * std::bad_alloc and reports it as an error like any other, its message then being the
+ * exception's alone: that one is running out of memory, status 4 (xalloc.h), not a
+ * malformed file. The match is exact, as a parse error quotes the file, which can say
+ * bad_alloc (found by fuzzing). */
 static int malformed(const char *path, char *err, size_t errlen)
 {
 	const char *msg = aiGetErrorString();
-	if (msg && strstr(msg, "bad_alloc")) {
+	if (msg && strcmp(msg, "std::bad_alloc") == 0) {
 		fprintf(stderr, "scn: out of memory (reading mesh file '%s')\n", path);
 		cleanup_exit(4);
 	}
@@ -75,23 +77,17 @@ static int malformed(const char *path, char *err, size_t errlen)
 	return mesh_fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);
 }
 
-/* Whether assimp's reader alone, without validation or post-processing, reads path and
- * finds no polygon in it. A file of only points or lines, or of nothing, fails validation
- * (which wants a mesh, with faces); this tells that case apart from a broken file. Only
- * counts are read, as this scene is not validated. */
-static bool reader_finds_no_polygons(const char *path)
+/* Whether assimp's last error is validation finding no faces, or no mesh: a file of
+ * only points, or of nothing, fails validation (which wants a mesh, with faces), and this
+ * tells that case apart from a broken file. (Reading the file again without validation
+ * to count its faces is not safe: assimp then runs its ScenePreprocessor on what
+ * validation would have refused, and reads out of bounds on a face without indices, as
+ * in an OFF file found by fuzzing.) */
+static bool validation_found_no_faces(void)
 {
-	const struct aiScene *sc = aiImportFile(path, 0);
-	if (!sc)
-		return false;
-	bool none = true;
-	for (unsigned i = 0; none && sc->mMeshes && i < sc->mNumMeshes; i++) {
-		const struct aiMesh *m = sc->mMeshes[i];
-		for (unsigned j = 0; none && m && m->mFaces && j < m->mNumFaces; j++)
-			none = m->mFaces[j].mNumIndices < 3;
-	}
-	aiReleaseImport(sc);
-	return none;
+	const char *msg = aiGetErrorString();
+	return msg && strncmp(msg, "Validation failed: ", 19) == 0 &&
+	       (strstr(msg, " contains no faces") || strstr(msg, "mNumMeshes is 0"));
 }
 
 /* Sets each mesh's mPrimitiveTypes from its faces, so that Triangulate's assertion holds.
@@ -155,9 +151,10 @@ static const struct aiScene *import(const char *path, bool drop_normals, bool *t
 	const struct aiScene *sc = aiImportFileExWithProperties(path, read_flags, NULL, props);
 	aiReleasePropertyStore(props);
 	if (!sc) {
-		malformed(path, err, errlen); /* before the second read overwrites the message */
-		if (reader_finds_no_polygons(path))
+		if (validation_found_no_faces())
 			mesh_fail(err, errlen, "no triangles in '%s'", path);
+		else
+			malformed(path, err, errlen);
 		return NULL;
 	}
 	if (set_primitive_types(sc, path, err, errlen)) {
