@@ -33,8 +33,10 @@ int mesh_fail(char *err, size_t errlen, const char *fmt, ...)
 	return 1;
 }
 
-/* The offset just past the "end_header" that starts one of the first n bytes' lines,
- * give or take blanks, as assimp's PLY reader looks for it; 0 if there is none. */
+/* The offset just past the "end_header" line that starts one of the first n bytes'
+ * lines, give or take blanks, as assimp's PLY reader looks for it; 0 if there is none.
+ * The line must end: assimp 5.2 can loop forever on a file that stops right after
+ * end_header (found by fuzzing), and such a file has no vertices anyway. */
 static size_t ply_header_end(const char *head, size_t n)
 {
 	static const char token[] = "end_header";
@@ -45,9 +47,12 @@ static size_t ply_header_end(const char *head, size_t n)
 		size_t j = i;
 		while (j < n && (head[j] == ' ' || head[j] == '\t'))
 			j++;
-		if (n - j >= len && memcmp(head + j, token, len) == 0 &&
-		    (n - j == len || memchr(" \t\r\n\f", head[j + len], 6)))
-			return j + len;
+		if (n - j < len || memcmp(head + j, token, len) != 0)
+			continue;
+		for (j += len; j < n && (head[j] == ' ' || head[j] == '\t' || head[j] == '\f'); j++)
+			;
+		if (j < n && (head[j] == '\n' || head[j] == '\r'))
+			return j + 1;
 	}
 	return 0;
 }
