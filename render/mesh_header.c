@@ -5,6 +5,10 @@
  *   allocates for them up front (16 bytes and more per element), so a few bytes claiming
  *   10^9 vertices would have it ask for gigabytes, and fail, or worse, before it finds
  *   that the file holds none of them.
+ * - a PLY header must follow PLY's grammar (the "ply" line, format, comment, obj_info,
+ *   element, property and end_header lines, known types, each element once): assimp 5.2
+ *   writes past its buffers on some malformed headers, such as repeated elements with
+ *   unknown property types (found by fuzzing; valgrind shows the write).
  * Each element takes some bytes in the file, so a count beyond the file's size is a
  * malformed file, refused with the count in the message. */
 #include "mesh_header.h"
@@ -57,11 +61,12 @@ static size_t ply_header_end(const char *head, size_t n)
 	return 0;
 }
 
-/* The bytes one value of a PLY type takes in a binary file (1 for a name assimp will
- * reject anyway). */
+/* The bytes one value of a PLY type takes in a binary file; 0 for a name that is not a
+ * PLY type. */
 static unsigned ply_type_size(const char *type)
 {
 	static const struct { const char *name; unsigned size; } types[] = {
+		{ "char", 1 }, { "uchar", 1 }, { "int8", 1 }, { "uint8", 1 },
 		{ "short", 2 }, { "ushort", 2 }, { "int16", 2 }, { "uint16", 2 },
 		{ "int", 4 }, { "uint", 4 }, { "int32", 4 }, { "uint32", 4 }, { "float", 4 },
 		{ "float32", 4 }, { "double", 8 }, { "float64", 8 },
@@ -69,7 +74,33 @@ static unsigned ply_type_size(const char *type)
 	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
 		if (strcmp(type, types[i].name) == 0)
 			return types[i].size;
-	return 1;
+	return 0;
+}
+
+/* Whether a PLY header line of k words (k > 0), the line_no-th, is PLY's grammar; an
+ * element's name must not be among the seen ones before it (which it joins). */
+static bool ply_line_ok(char word[][64], int k, int line_no, char seen[][64], int *nseen)
+{
+	if (line_no == 0)
+		return k == 1 && strcmp(word[0], "ply") == 0;
+	if (strcmp(word[0], "comment") == 0 || strcmp(word[0], "obj_info") == 0)
+		return true;
+	if (strcmp(word[0], "format") == 0)
+		return k == 3 && (strcmp(word[1], "ascii") == 0 || strcmp(word[1], "binary_little_endian") == 0 ||
+		                  strcmp(word[1], "binary_big_endian") == 0);
+	if (strcmp(word[0], "property") == 0)
+		return (k == 3 && ply_type_size(word[1])) ||
+		       (k == 5 && strcmp(word[1], "list") == 0 && ply_type_size(word[2]) && ply_type_size(word[3]));
+	if (strcmp(word[0], "element") == 0) {
+		if (k != 3 || *nseen == 16)
+			return false;
+		for (int i = 0; i < *nseen; i++)
+			if (strcmp(seen[i], word[1]) == 0)
+				return false;
+		snprintf(seen[(*nseen)++], 64, "%s", word[1]);
+		return true;
+	}
+	return k == 1 && strcmp(word[0], "end_header") == 0;
 }
 
 /* The elements a PLY header (its first len bytes) declares must fit in the rest of the
@@ -83,8 +114,10 @@ static int ply_counts(const char *head, size_t len, long long size, const char *
 	double count = 0;              /* of the current element */
 	unsigned bytes = 0;            /* per current element, at least */
 	char name[64] = "";
-	for (size_t i = 0;;) {
-		char word[4][64];
+	char seen[16][64];             /* the element names so far */
+	int nseen = 0;
+	for (size_t i = 0, line_no = 0;; line_no++) {
+		char word[5][64];
 		int k = 0;
 		if (i < len) {
 			const char *eol = memchr(head + i, '\n', len - i);
@@ -92,7 +125,10 @@ static int ply_counts(const char *head, size_t len, long long size, const char *
 			char line[256];
 			snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line ? n : sizeof line - 1), head + i);
 			i += n + 1;
-			k = sscanf(line, "%63s %63s %63s %63s", word[0], word[1], word[2], word[3]);
+			k = sscanf(line, "%63s %63s %63s %63s %63s", word[0], word[1], word[2], word[3], word[4]);
+			if (k > 0 && !ply_line_ok(word, k, (int)line_no, seen, &nseen))
+				return mesh_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, '%s', "
+				                 "is not PLY", path, line_no + 1, line);
 		}
 		bool element = k >= 3 && strcmp(word[0], "element") == 0;
 		if (element || i >= len) {
