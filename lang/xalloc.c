@@ -59,6 +59,14 @@ void *xrealloc(void *ptr, size_t size)
 	return p;
 }
 
+void *xaligned_alloc(size_t align, size_t size)
+{
+	void *p = size <= alloc_limit() ? aligned_alloc(align, size ? size : align) : NULL;
+	if (!p)
+		out_of_memory(size);
+	return p;
+}
+
 void xgrow(void **ptr, size_t *cap, size_t need, size_t elem)
 {
 	if (need <= *cap)

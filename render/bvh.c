@@ -1,10 +1,11 @@
 /* bvh.c: a binned SAH bounding volume hierarchy (Wald, "On fast Construction of
- * SAH-based Bounding Volume Hierarchies", 2007) in 32-byte nodes whose two children sit
- * side by side, so that traversal tests both boxes from one cache line and enters the
- * nearer first. Bounds are kept in float, rounded outward, so a box never loses what it
- * holds (NUMERICS.md section 1); the slab test runs in double and is robust to zero
- * direction components and origins on a slab (Ize, "Robust BVH Ray Traversal", JCGT
- * 2013).
+ * SAH-based Bounding Volume Hierarchies", 2007), built binary and collapsed into
+ * four-wide nodes whose children's boxes one SSE slab test handles at once, nearest
+ * child first. Bounds are kept in float, rounded outward, so a box never loses what it
+ * holds, and the slab test in float is made conservative by rounding the ray's origin
+ * and 1/d outward and widening the exit distance (NUMERICS.md section 1; pbrt 3rd ed.
+ * section 3.9.2); it is robust to zero direction components and origins on a slab (Ize,
+ * "Robust BVH Ray Traversal", JCGT 2013).
  *
  * The build splits the top of the tree on one thread and hands the subtrees below a size
  * fixed by the primitive count to worker threads, then joins their nodes in the order
@@ -30,56 +31,49 @@ enum {
 	TASKS_PER_TREE = 64, /* subtrees the top split aims for, so that threads share the work evenly */
 };
 
-/* Vectors, with SSE2 where there is SSE2 (every x86-64) and GCC's generic vectors
- * elsewhere. v2d: two doubles, one per child of a node, so that the slab test runs on
- * both children at once; v4f: a float box corner, for the build. */
+/* Four floats, with SSE where there is SSE (every x86-64) and GCC's generic vectors
+ * elsewhere: a box corner for the build, and one coordinate of the four children of a
+ * node for the traversal. */
 #ifdef __SSE2__
 #include <emmintrin.h>
 typedef __m128 v4f;
 static inline v4f v4set(float x) { return _mm_set1_ps(x); }
 static inline v4f v4load(const float p[4]) { return _mm_loadu_ps(p); }
 static inline void v4store(float p[4], v4f a) { _mm_storeu_ps(p, a); }
-static inline v4f v4min(v4f a, v4f b) { return _mm_min_ps(a, b); }
-static inline v4f v4max(v4f a, v4f b) { return _mm_max_ps(a, b); }
 static inline v4f v4sub(v4f a, v4f b) { return _mm_sub_ps(a, b); }
-typedef __m128d v2d;
-static inline v2d v2set(double x) { return _mm_set1_pd(x); }
-static inline v2d v2load(const float p[2]) { return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)p))); }
-static inline v2d v2sub(v2d a, v2d b) { return _mm_sub_pd(a, b); }
-static inline v2d v2mul(v2d a, v2d b) { return _mm_mul_pd(a, b); }
+static inline v4f v4mul(v4f a, v4f b) { return _mm_mul_ps(a, b); }
+static inline v4f v4add(v4f a, v4f b) { return _mm_add_ps(a, b); }
 /* a > b ? a : b and a < b ? a : b, lane by lane: a NaN in a gives b */
-static inline v2d v2max(v2d a, v2d b) { return _mm_max_pd(a, b); }
-static inline v2d v2min(v2d a, v2d b) { return _mm_min_pd(a, b); }
+static inline v4f v4max(v4f a, v4f b) { return _mm_max_ps(a, b); }
+static inline v4f v4min(v4f a, v4f b) { return _mm_min_ps(a, b); }
 /* bit c set when a[c] <= b[c] */
-static inline int v2le(v2d a, v2d b) { return _mm_movemask_pd(_mm_cmple_pd(a, b)); }
-static inline double v2lane(v2d a, int c) { return c ? _mm_cvtsd_f64(_mm_unpackhi_pd(a, a)) : _mm_cvtsd_f64(a); }
+static inline int v4le(v4f a, v4f b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
 #else
 typedef float v4f __attribute__((vector_size(16)));
 typedef int v4i __attribute__((vector_size(16)));
 static inline v4f v4set(float x) { return (v4f){ x, x, x, x }; }
 static inline v4f v4load(const float p[4]) { v4f a; memcpy(&a, p, sizeof a); return a; }
 static inline void v4store(float p[4], v4f a) { memcpy(p, &a, sizeof a); }
-static inline v4f v4min(v4f a, v4f b) { v4i m = a < b; return (v4f)(((v4i)a & m) | ((v4i)b & ~m)); }
-static inline v4f v4max(v4f a, v4f b) { v4i m = a > b; return (v4f)(((v4i)a & m) | ((v4i)b & ~m)); }
 static inline v4f v4sub(v4f a, v4f b) { return a - b; }
-typedef double v2d __attribute__((vector_size(16)));
-typedef long long v2l __attribute__((vector_size(16)));
-static inline v2d v2set(double x) { return (v2d){ x, x }; }
-static inline v2d v2load(const float p[2]) { return (v2d){ p[0], p[1] }; }
-static inline v2d v2sub(v2d a, v2d b) { return a - b; }
-static inline v2d v2mul(v2d a, v2d b) { return a * b; }
-static inline v2d v2max(v2d a, v2d b) { v2l m = a > b; return (v2d)(((v2l)a & m) | ((v2l)b & ~m)); }
-static inline v2d v2min(v2d a, v2d b) { v2l m = a < b; return (v2d)(((v2l)a & m) | ((v2l)b & ~m)); }
-static inline int v2le(v2d a, v2d b) { v2l m = a <= b; return (int)(m[0] & 1) | (int)(m[1] & 2); }
-static inline double v2lane(v2d a, int c) { return a[c]; }
+static inline v4f v4mul(v4f a, v4f b) { return a * b; }
+static inline v4f v4add(v4f a, v4f b) { return a + b; }
+static inline v4f v4max(v4f a, v4f b) { v4i m = a > b; return (v4f)(((v4i)a & m) | ((v4i)b & ~m)); }
+static inline v4f v4min(v4f a, v4f b) { v4i m = a < b; return (v4f)(((v4i)a & m) | ((v4i)b & ~m)); }
+static inline int v4le(v4f a, v4f b)
+{
+	v4i m = a <= b;
+	return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
+}
 #endif
 
-/* An interior node holds its two children's boxes, side by side so that one pair of
- * vector operations tests both: [lo x, y, z, hi x, y, z][child]. */
+/* The traversal's node: the boxes of up to four children, coordinate by coordinate so
+ * that one vector operation handles all four ([lo x, y, z, hi x, y, z][child]), and
+ * what each child is. An unused slot has an empty box (lo +inf, hi -inf), which no ray
+ * meets. 128 bytes, two cache lines. */
 struct bvh_node {
-	float box[6][2];
-	uint32_t index[2]; /* child c: a node, or for a leaf the first entry of prims */
-	uint32_t count[2]; /* child c: primitives in the leaf; 0: a node */
+	float box[6][4];
+	uint32_t index[4]; /* child c: a node, or for a leaf the first entry of prims */
+	uint32_t count[4]; /* child c: primitives in the leaf; 0: a node */
 };
 
 /* A subtree as its parent sees it. */
@@ -88,10 +82,15 @@ struct child {
 	uint32_t index, count;
 };
 
+/* A node of the binary tree the build makes; the four-wide tree is collapsed from it. */
+struct bin_node {
+	struct child kid[2];
+};
+
 struct bvh {
 	struct child root;
-	struct bvh_node *nodes;
-	size_t nnodes;
+	struct bvh_node *nodes;    /* four-wide, cache-line aligned */
+	size_t nnodes, nboxes;
 	uint32_t *prims;   /* prim_id()s in leaf order */
 	size_t nprims;
 	int depth;
@@ -106,7 +105,7 @@ struct build_ref {
 };
 
 struct node_vec {
-	struct bvh_node *v;
+	struct bin_node *v;
 	size_t n, cap;
 };
 
@@ -115,10 +114,9 @@ struct node_vec {
 #define NO_PARENT UINT32_MAX
 struct task {
 	uint32_t parent, c, first, n;
-	int depth;
+	int depth;               /* its level in the tree */
 	struct child result;     /* the worker's result; its node indices are local to nodes */
 	struct node_vec nodes;
-	int max_depth;
 };
 
 struct builder {
@@ -283,18 +281,14 @@ static void set_child(struct bvh *bvh, struct node_vec *nv, uint32_t parent, uin
 		bvh->root = *ch;
 		return;
 	}
-	struct bvh_node *nd = &nv->v[parent];
-	for (int k = 0; k < 6; k++)
-		nd->box[k][c] = ch->box[k];
-	nd->index[c] = ch->index;
-	nd->count[c] = ch->count;
+	nv->v[parent].kid[c] = *ch;
 }
 
 /* Builds the subtree of refs[first, first + n) into nv and returns it as its parent
  * sees it; at the top (b->task_size set) a small enough subtree is left to a worker, and
- * its parent's slot filled in later. *depth: the deepest level reached. */
+ * its parent's slot filled in later. */
 static struct child build(struct builder *b, struct node_vec *nv, uint32_t parent, uint32_t c, uint32_t first,
-                          uint32_t n, int level, int *depth)
+                          uint32_t n, int level)
 {
 	struct child ch = { .count = 0 };
 	if (b->task_size && n <= b->task_size) {
@@ -302,8 +296,6 @@ static struct child build(struct builder *b, struct node_vec *nv, uint32_t paren
 		b->tasks[b->ntasks++] = (struct task){ .parent = parent, .c = c, .first = first, .n = n, .depth = level };
 		return ch;
 	}
-	if (level > *depth)
-		*depth = level;
 	struct build_ref *refs = b->refs + first;
 	struct vbox box = vbox_empty(), cbox = vbox_empty();
 	for (size_t i = 0; i < n; i++) {
@@ -344,9 +336,9 @@ static struct child build(struct builder *b, struct node_vec *nv, uint32_t paren
 	}
 	uint32_t node = push_node(nv);
 	ch.index = node;
-	struct child l = build(b, nv, node, 0, first, (uint32_t)mid, level + 1, depth);
+	struct child l = build(b, nv, node, 0, first, (uint32_t)mid, level + 1);
 	set_child(NULL, nv, node, 0, &l);
-	struct child r = build(b, nv, node, 1, first + (uint32_t)mid, n - (uint32_t)mid, level + 1, depth);
+	struct child r = build(b, nv, node, 1, first + (uint32_t)mid, n - (uint32_t)mid, level + 1);
 	set_child(NULL, nv, node, 1, &r);
 	return ch;
 }
@@ -359,8 +351,7 @@ static void *worker(void *arg)
 		if (i >= b->ntasks)
 			return NULL;
 		struct task *t = &b->tasks[i];
-		t->max_depth = t->depth;
-		t->result = build(b, &t->nodes, NO_PARENT, 0, t->first, t->n, t->depth, &t->max_depth);
+		t->result = build(b, &t->nodes, NO_PARENT, 0, t->first, t->n, t->depth);
 		if (t->nodes.n) /* trimmed: bvh_bytes counts the nodes twice, not four times */
 			t->nodes.v = xrealloc(t->nodes.v, t->nodes.n * sizeof *t->nodes.v);
 	}
@@ -396,19 +387,102 @@ static void join_tasks(struct builder *b, struct bvh *bvh, struct node_vec *top)
 		struct task *t = &b->tasks[i];
 		uint32_t base = (uint32_t)top->n;
 		for (size_t k = 0; k < t->nodes.n; k++) {
-			struct bvh_node nd = t->nodes.v[k];
+			struct bin_node nd = t->nodes.v[k];
 			for (int c = 0; c < 2; c++)
-				if (nd.count[c] == 0)
-					nd.index[c] += base;
+				if (nd.kid[c].count == 0)
+					nd.kid[c].index += base;
 			top->v[top->n++] = nd;
 		}
 		if (t->result.count == 0)
 			t->result.index += base;
 		set_child(bvh, top, t->parent, t->c, &t->result);
-		if (t->max_depth > bvh->depth)
-			bvh->depth = t->max_depth;
 		free(t->nodes.v);
 	}
+}
+
+/* The area of a child's box, for choosing which child to open; infinite boxes (a
+ * scene beyond float range) count as the largest. */
+static float child_area(const struct child *ch)
+{
+	float e[3] = { ch->box[3] - ch->box[0], ch->box[4] - ch->box[1], ch->box[5] - ch->box[2] };
+	float a = e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+	return a == a ? a : INFINITY;
+}
+
+/* The children of the four-wide node that stands for binary node `node`: its two
+ * children, then, while there are fewer than four, the interior one with the largest box
+ * replaced by its own two (the area rule of Wald, Benthin and Boulos, "Getting Rid of
+ * Packets", 2008: the children most rays enter are the ones worth testing together).
+ * Returns how many there are. */
+static int gather(const struct bin_node *bin, uint32_t node, struct child out[4])
+{
+	int n = 2;
+	out[0] = bin[node].kid[0];
+	out[1] = bin[node].kid[1];
+	while (n < 4) {
+		int open = -1;
+		for (int i = 0; i < n; i++)
+			if (out[i].count == 0 && (open < 0 || child_area(&out[i]) > child_area(&out[open])))
+				open = i;
+		if (open < 0)
+			break;
+		const struct bin_node *b = &bin[out[open].index];
+		out[open] = b->kid[0];
+		out[n++] = b->kid[1];
+	}
+	return n;
+}
+
+struct collapse {
+	const struct bin_node *bin;
+	struct bvh_node *out;      /* NULL: only count the nodes */
+	uint32_t next;             /* nodes made so far */
+	size_t boxes;
+	int depth;
+};
+
+/* Turns the binary subtree below interior child ch into four-wide nodes, in preorder;
+ * returns ch as its parent sees it now. Counting and writing take the same path, so the
+ * counting pass sizes the array exactly. */
+static struct child collapse(struct collapse *cl, struct child ch, int level)
+{
+	if (ch.count)
+		return ch;
+	if (level > cl->depth)
+		cl->depth = level;
+	struct child kid[4];
+	int n = gather(cl->bin, ch.index, kid);
+	uint32_t self = cl->next++;
+	cl->boxes += (size_t)n;
+	for (int c = 0; c < n; c++)
+		kid[c] = collapse(cl, kid[c], level + 1);
+	if (cl->out) {
+		struct bvh_node *nd = &cl->out[self];
+		for (int c = 0; c < 4; c++) {
+			for (int k = 0; k < 6; k++)
+				nd->box[k][c] = c < n ? kid[c].box[k] : k < 3 ? INFINITY : -INFINITY;
+			nd->index[c] = c < n ? kid[c].index : 0;
+			nd->count[c] = c < n ? kid[c].count : 0;
+		}
+	}
+	ch.index = self;
+	return ch;
+}
+
+/* The four-wide tree of the binary one: a pass to count, the array aligned to cache
+ * lines, a pass to fill it. */
+static void make_wide(struct bvh *bvh, const struct bin_node *bin)
+{
+	struct collapse cl = { .bin = bin };
+	collapse(&cl, bvh->root, 0);
+	bvh->nnodes = cl.next;
+	bvh->nboxes = cl.boxes + 1;
+	bvh->depth = cl.depth;
+	if (!cl.next)
+		return;
+	bvh->nodes = xaligned_alloc(64, cl.next * sizeof *bvh->nodes);
+	cl = (struct collapse){ .bin = bin, .out = bvh->nodes };
+	bvh->root = collapse(&cl, bvh->root, 0);
 }
 
 struct bvh *bvh_build(const struct scene *sc, enum accel kind)
@@ -446,7 +520,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	size_t task = n / TASKS_PER_TREE;
 	b.task_size = task > MIN_TASK ? task : MIN_TASK;
 	struct node_vec top = { 0 };
-	bvh->root = build(&b, &top, NO_PARENT, 0, 0, (uint32_t)n, 0, &bvh->depth);
+	bvh->root = build(&b, &top, NO_PARENT, 0, 0, (uint32_t)n, 0);
 	b.task_size = 0;
 	long cores = sysconf(_SC_NPROCESSORS_ONLN);
 	atomic_init(&b.next_task, 0);
@@ -454,16 +528,19 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	join_tasks(&b, bvh, &top);
 	free(b.tasks);
 	free(b.refs);
-	bvh->nodes = top.n ? xrealloc(top.v, top.n * sizeof *top.v) : NULL;
-	bvh->nnodes = top.n;
+	make_wide(bvh, top.v);
+	free(top.v);
 	return bvh;
 }
 
 uint64_t bvh_bytes(uint64_t n)
 {
-	/* build records, prims, and the nodes (one primitive a leaf: n - 1 of them) twice
-	 * over: the workers' arrays, each trimmed to its nodes, and the joined one */
-	return n * (sizeof(struct build_ref) + sizeof(uint32_t) + 2 * sizeof(struct bvh_node));
+	/* one primitive a leaf: n - 1 binary nodes, which exist twice while the workers'
+	 * arrays are joined, beside the build records; then once, beside at most as many
+	 * wide ones (each stands for at least one) */
+	uint64_t build = sizeof(struct build_ref) + 2 * sizeof(struct bin_node);
+	uint64_t wide = sizeof(struct bin_node) + sizeof(struct bvh_node);
+	return n * (sizeof(uint32_t) + (build > wide ? build : wide));
 }
 
 void bvh_free(struct bvh *b)
@@ -477,56 +554,86 @@ void bvh_free(struct bvh *b)
 
 void bvh_shape(const struct bvh *b, size_t *nodes, int *depth)
 {
-	*nodes = b->nprims ? 2 * b->nnodes + 1 : 0; /* boxes, the root's included */
+	*nodes = b->nprims ? b->nboxes : 0;
 	*depth = b->depth;
 }
 
-/* What the slab test needs of a ray, worked out once: for each axis the box coordinate
- * it enters by (lo, or hi when the direction is negative) and the one it leaves by. */
-struct ray_slabs {
-	v2d o[3], inv[3];
+/* What the slab test needs of a ray, worked out once per axis: the box coordinate it
+ * enters by (lo, or hi when the direction is negative) and the one it leaves by, and the
+ * origin and 1/d in float, rounded each way. The test runs in float on float boxes, so
+ * it must stay conservative (NUMERICS.md section 1): the distance to the entry plane is
+ * taken from the origin rounded towards that plane and with |1/d| rounded down, the
+ * distance to the exit plane with the origin rounded away and |1/d| rounded up and
+ * widened, so the two bound the exact distances (before the float arithmetic's own
+ * rounding, which the widening covers, see FAR_WIDEN). A zero component keeps a finite
+ * |1/d| on the entry side (0 * inf would be NaN there); on the exit side 1/d is infinite,
+ * and an origin on a slab plane gives 0 * inf = NaN, which slab() discards. */
+struct ray4 {
+	v4f o_near[3], o_far[3], inv_near[3], inv_far[3];
 	int enter[3], leave[3];     /* indices into bvh_node.box */
 };
 
-static void ray_slabs(const struct ray *r, struct ray_slabs *s)
+/* The entry distance of a box comes out at most (1 + u)^2 too large, the exit distance
+ * (1 - u)^2 too small (a subtraction and a product, u = 2^-24): widening the exit side's
+ * |1/d| by 1 + 8u covers both (pbrt's 1 + 2 gamma(3) on tfar). FAR_SLACK covers products
+ * that underflow, whose error is absolute (2^-150 each). */
+#define FAR_WIDEN (1 + 8 * 0x1p-24)
+#define FAR_SLACK (4 * FLT_TRUE_MIN)
+/* Rounding to float to nearest moves a value by at most 2^-24 of itself (or 2^-150, if
+ * it underflows): moving it first by 2^-22 of itself (and FLT_TRUE_MIN) in double makes
+ * the float fall on the side wanted. Cheaper than exact directed rounding, and without
+ * branches, which matters with nine such values per ray; a few ulps wider is harmless. */
+#define ROUND_MARGIN 0x1p-22
+
+static void ray4_init(const struct ray *r, struct ray4 *s)
 {
 	for (int k = 0; k < 3; k++) {
-		double inv = 1 / vget(r->d, k);
-		s->o[k] = v2set(vget(r->o, k));
-		s->inv[k] = v2set(inv);
-		/* by the sign of 1/d, not by comparing the two distances: with a -0 component and
-		 * the origin on a face one of them is NaN, and the comparison would keep -inf as
-		 * the far distance */
-		bool neg = inv < 0;
+		double d = vget(r->d, k), o = vget(r->o, k), inv = 1 / d;
+		double m = fabs(o) * ROUND_MARGIN + FLT_TRUE_MIN;
+		/* clamped, as a finite value beyond float range would round to inf either way */
+		float o_down = (float)(o - m < FLT_MAX ? o - m : FLT_MAX);
+		float o_up = (float)(o + m > -FLT_MAX ? o + m : -FLT_MAX);
+		/* by the sign of d, not by comparing the two distances: with a -0 component and
+		 * the origin on a face one of them is NaN */
+		bool neg = signbit(d);
+		s->o_near[k] = v4set(neg ? o_down : o_up);
+		s->o_far[k] = v4set(neg ? o_up : o_down);
+		double inv_in = fabs(inv) * (1 - ROUND_MARGIN);
+		s->inv_near[k] = v4set((float)copysign(inv_in < FLT_MAX ? inv_in : FLT_MAX, inv));
+		s->inv_far[k] = v4set((float)(inv * (FAR_WIDEN + ROUND_MARGIN)));
 		s->enter[k] = k + 3 * neg;
 		s->leave[k] = k + 3 * !neg;
 	}
 }
 
-/* One axis of the slab test: narrows [*tnear, *tfar] to where the ray is between the two
- * planes. The comparisons are ordered so that a NaN from 0 * inf (origin on a slab
- * plane, direction parallel to it) is discarded, and the exit distance is widened by
- * pbrt's 1 + 2 gamma(3) so that rounding never culls a real hit. */
-static inline void slab(const struct bvh_node *n, const struct ray_slabs *s, int k, v2d *tnear, v2d *tfar)
+/* tmax as the traversal compares with it: rounded up to float and widened as the exit
+ * distances are, so that an entry distance computed too large still passes. */
+static inline float far_bound(double tmax)
 {
-	v2d t0 = v2mul(v2sub(v2load(n->box[s->enter[k]]), s->o[k]), s->inv[k]);
-	v2d t1 = v2mul(v2sub(v2load(n->box[s->leave[k]]), s->o[k]), s->inv[k]);
-	t1 = v2mul(t1, v2set(1 + 2 * err_gamma(3)));
-	*tnear = v2max(t0, *tnear);
-	*tfar = v2min(t1, *tfar);
+	return (float)(tmax * (FAR_WIDEN + ROUND_MARGIN)) + FAR_SLACK;
 }
 
-/* Slab test in double against the float boxes of both children of n: bit c of the
- * result is set when the ray meets child c's box at some t in [0, tmax], from t_enter[c]
- * on. */
-static inline int pair_hit(const struct bvh_node *n, const struct ray_slabs *s, double tmax, v2d *t_enter)
+/* One axis of the slab test: narrows [tnear, tfar] of the four children of n. The
+ * comparisons keep the accumulated value when the new one is NaN (0 * inf: the origin on
+ * a slab plane, the direction parallel to it). */
+static inline void slab(const struct bvh_node *n, const struct ray4 *s, int k, v4f *tnear, v4f *tfar)
 {
-	v2d tnear = v2set(0), tfar = v2set(tmax);
+	v4f t0 = v4mul(v4sub(v4load(n->box[s->enter[k]]), s->o_near[k]), s->inv_near[k]);
+	v4f t1 = v4mul(v4sub(v4load(n->box[s->leave[k]]), s->o_far[k]), s->inv_far[k]);
+	*tnear = v4max(t0, *tnear);
+	*tfar = v4min(t1, *tfar);
+}
+
+/* The slab test of the four children of n: bit c of the result is set when the ray may
+ * meet child c's box at some t in [0, tmax], from t_enter[c] on. tmax: far_bound(). */
+static inline int node_hit(const struct bvh_node *n, const struct ray4 *s, v4f tmax, v4f *t_enter)
+{
+	v4f tnear = v4set(0), tfar = tmax;
 	slab(n, s, 0, &tnear, &tfar);
 	slab(n, s, 1, &tnear, &tfar);
 	slab(n, s, 2, &tnear, &tfar);
 	*t_enter = tnear;
-	return v2le(tnear, tfar);
+	return v4le(tnear, v4add(tfar, v4set(FAR_SLACK)));
 }
 
 /* What a query does with a leaf's primitives prims[first, +count): test them against
@@ -534,57 +641,58 @@ static inline int pair_hit(const struct bvh_node *n, const struct ray_slabs *s, 
  * walk. */
 typedef bool leaf_fn(const struct bvh *b, uint32_t first, uint32_t count, void *query, double *tmax);
 
-/* Visits every leaf whose box the ray meets before *tmax, the nearer child first, and
- * skips a deferred subtree that starts beyond *tmax as it stands when its turn comes. */
+/* Visits every leaf whose box the ray may meet before *tmax, nearer children first, and
+ * skips a deferred subtree that starts beyond *tmax as it stands when its turn comes.
+ * The root's own box is not tested: its children's are, in the first node. */
 static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, leaf_fn *visit, void *query)
 {
-	struct ray_slabs s;
-	ray_slabs(r, &s);
-	/* the root as the only child of a node whose other box is empty */
-	struct bvh_node top = { .index = { b->root.index, 0 }, .count = { b->root.count, 0 } };
-	for (int k = 0; k < 3; k++) {
-		top.box[k][0] = b->root.box[k];
-		top.box[k + 3][0] = b->root.box[k + 3];
-		top.box[k][1] = INFINITY;
-		top.box[k + 3][1] = -INFINITY;
-	}
-	struct { uint32_t index, count; double t; } stack[MAX_DEPTH + 8];
+	struct ray4 s;
+	ray4_init(r, &s);
+	float bound = far_bound(*tmax);
+	v4f bound_v = v4set(bound);
+	struct entry {
+		uint32_t index, count;
+		float t;
+	} stack[3 * MAX_DEPTH + 8], e = { b->root.index, b->root.count, 0 };
 	int sp = 0;
-	const struct bvh_node *n = &top;
 	for (;;) {
-		v2d t;
-		int hit = pair_hit(n, &s, *tmax, &t);
-		uint32_t index = 0, count = 0;
-		if (hit) {
-			int c = hit == 3 ? v2lane(t, 1) < v2lane(t, 0) : hit >> 1; /* the nearer child hit */
-			if (hit == 3) {
-				stack[sp].index = n->index[!c];
-				stack[sp].count = n->count[!c];
-				stack[sp].t = v2lane(t, !c);
-				sp++;
-			}
-			index = n->index[c];
-			count = n->count[c];
-			if (!count) {
-				n = &b->nodes[index];
+		if (e.count) {
+			if (visit(b, e.index, e.count, query, tmax))
+				return;
+			bound = far_bound(*tmax);
+			bound_v = v4set(bound);
+		} else {
+			const struct bvh_node *n = &b->nodes[e.index];
+			v4f tv;
+			int mask = node_hit(n, &s, bound_v, &tv);
+			if (mask) {
+				/* the children hit, nearest first; the others wait on the stack, the
+				 * farthest deepest. One or two hits are the common cases. */
+				float t[4];
+				v4store(t, tv);
+				int c = __builtin_ctz((unsigned)mask);
+				mask &= mask - 1;
+				if (mask) {
+					int order[4] = { c }, k = 1;
+					for (; mask; mask &= mask - 1, k++) {
+						int i = k, m = __builtin_ctz((unsigned)mask);
+						for (; i > 0 && t[order[i - 1]] > t[m]; i--)
+							order[i] = order[i - 1];
+						order[i] = m;
+					}
+					while (--k > 0)
+						stack[sp++] = (struct entry){ n->index[order[k]], n->count[order[k]], t[order[k]] };
+					c = order[0];
+				}
+				e = (struct entry){ n->index[c], n->count[c], t[c] };
 				continue;
 			}
 		}
-		/* a leaf, then what the stack holds: leaves are visited until a node comes */
-		for (;;) {
-			if (count && visit(b, index, count, query, tmax))
+		do {
+			if (sp == 0)
 				return;
-			do {
-				if (sp == 0)
-					return;
-				sp--;
-			} while (stack[sp].t > *tmax);
-			index = stack[sp].index;
-			count = stack[sp].count;
-			if (!count)
-				break;
-		}
-		n = &b->nodes[index];
+			e = stack[--sp];
+		} while (e.t > bound);
 	}
 }
 

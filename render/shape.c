@@ -203,10 +203,7 @@ struct vec3 offset_origin(const struct surface_point *sp, struct vec3 w)
 		off = vneg(off);
 	struct vec3 o = vadd(sp->p, off);
 	/* round away from the surface: the sum above may have rounded towards it */
-	o.x = off.x > 0 ? nextafter(o.x, INFINITY) : off.x < 0 ? nextafter(o.x, -INFINITY) : o.x;
-	o.y = off.y > 0 ? nextafter(o.y, INFINITY) : off.y < 0 ? nextafter(o.y, -INFINITY) : o.y;
-	o.z = off.z > 0 ? nextafter(o.z, INFINITY) : off.z < 0 ? nextafter(o.z, -INFINITY) : o.z;
-	return o;
+	return v3(vstep(o.x, off.x), vstep(o.y, off.y), vstep(o.z, off.z));
 }
 
 bool planes_intersect(const struct scene *sc, const struct ray *r, struct hit *h)

@@ -4,6 +4,8 @@
 #define SCN_VEC_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 struct vec3 {
 	double x, y, z;
@@ -41,5 +43,20 @@ static inline double vmaxc(struct vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
 static inline int vzero(struct vec3 a) { return a.x == 0 && a.y == 0 && a.z == 0; }
 /* a + s b */
 static inline struct vec3 vmad(struct vec3 a, double s, struct vec3 b) { return v3(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z); }
+
+/* The double next to finite x in the direction of the sign of s (x itself for s = 0):
+ * nextafter(x, s * inf) without the library call, for the hot path. */
+static inline double vstep(double x, double s)
+{
+	if (s == 0)
+		return x;
+	if (x == 0)
+		return copysign(0x1p-1074, s);
+	uint64_t u;
+	memcpy(&u, &x, sizeof u);
+	u += (x > 0) == (s > 0) ? 1 : (uint64_t)-1; /* away from zero: the bits grow */
+	memcpy(&x, &u, sizeof x);
+	return x;
+}
 
 #endif
