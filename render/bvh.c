@@ -641,10 +641,13 @@ static inline int node_hit(const struct bvh_node *n, const struct ray4 *s, v4f t
  * walk. */
 typedef bool leaf_fn(const struct bvh *b, uint32_t first, uint32_t count, void *query, double *tmax);
 
-/* Visits every leaf whose box the ray may meet before *tmax, nearer children first, and
- * skips a deferred subtree that starts beyond *tmax as it stands when its turn comes.
- * The root's own box is not tested: its children's are, in the first node. */
-static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, leaf_fn *visit, void *query)
+/* Visits every leaf whose box the ray may meet before *tmax and skips a deferred
+ * subtree that starts beyond *tmax as it stands when its turn comes. With nearest_first
+ * the children hit are visited in order of their entry distance, which lets a
+ * closest-hit query lower *tmax early; a shadow query, whose tmax stays, takes them as
+ * they come. The root's own box is not tested: its children's are, in the first node. */
+static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, leaf_fn *visit, void *query,
+                        bool nearest_first)
 {
 	struct ray4 s;
 	ray4_init(r, &s);
@@ -666,13 +669,12 @@ static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, 
 			v4f tv;
 			int mask = node_hit(n, &s, bound_v, &tv);
 			if (mask) {
-				/* the children hit, nearest first; the others wait on the stack, the
-				 * farthest deepest. One or two hits are the common cases. */
 				float t[4];
 				v4store(t, tv);
 				int c = __builtin_ctz((unsigned)mask);
 				mask &= mask - 1;
-				if (mask) {
+				if (mask && nearest_first) {
+					/* the others wait on the stack, the farthest deepest */
 					int order[4] = { c }, k = 1;
 					for (; mask; mask &= mask - 1, k++) {
 						int i = k, m = __builtin_ctz((unsigned)mask);
@@ -683,6 +685,10 @@ static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, 
 					while (--k > 0)
 						stack[sp++] = (struct entry){ n->index[order[k]], n->count[order[k]], t[order[k]] };
 					c = order[0];
+				}
+				for (; mask; mask &= mask - 1) {
+					int m = __builtin_ctz((unsigned)mask);
+					stack[sp++] = (struct entry){ n->index[m], n->count[m], t[m] };
 				}
 				e = (struct entry){ n->index[c], n->count[c], t[c] };
 				continue;
@@ -717,7 +723,7 @@ bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray
 	struct closest_query q = { sc, r, h, planes_intersect(sc, r, h) };
 	if (b->nprims) {
 		double tmax = h->t;
-		walk(b, r, &tmax, closest_leaf, &q);
+		walk(b, r, &tmax, closest_leaf, &q, true);
 	}
 	return q.hit;
 }
@@ -743,6 +749,6 @@ struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const
 {
 	struct shadow_query q = { sc, r, planes_filter(sc, r, tmax) };
 	if (!vzero(q.pass) && b->nprims)
-		walk(b, r, &tmax, shadow_leaf, &q);
+		walk(b, r, &tmax, shadow_leaf, &q, false);
 	return q.pass;
 }
