@@ -6,13 +6,16 @@
 #include "bvh.h"
 #include "grid.h"
 
-/* Builds sc->grid for ACCEL_GRID, sc->bvh otherwise. */
+/* Builds sc->grid for ACCEL_GRID, sc->bvh otherwise, with sc's primitives in its
+ * leaves' order. */
 static inline void accel_build(struct scene *sc, enum accel kind)
 {
-	if (kind == ACCEL_GRID)
+	if (kind == ACCEL_GRID) {
 		sc->grid = grid_build(sc);
-	else
+	} else {
 		sc->bvh = bvh_build(sc, kind);
+		bvh_reorder(sc->bvh, sc);
+	}
 }
 
 static inline bool accel_intersect(const struct scene *sc, const struct ray *r, struct hit *h)

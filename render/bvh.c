@@ -533,6 +533,27 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	return bvh;
 }
 
+void bvh_reorder(struct bvh *b, struct scene *sc)
+{
+	struct sphere *spheres = sc->nspheres ? xmalloc(sc->nspheres * sizeof *spheres) : NULL;
+	struct triangle *triangles = sc->ntriangles ? xmalloc(sc->ntriangles * sizeof *triangles) : NULL;
+	uint32_t ns = 0, nt = 0;
+	for (size_t i = 0; i < b->nprims; i++) {
+		uint32_t k = prim_index(b->prims[i]);
+		if (prim_kind(b->prims[i]) == PRIM_SPHERE) {
+			spheres[ns] = sc->spheres[k];
+			b->prims[i] = prim_id(PRIM_SPHERE, ns++);
+		} else {
+			triangles[nt] = sc->triangles[k];
+			b->prims[i] = prim_id(PRIM_TRIANGLE, nt++);
+		}
+	}
+	free(sc->spheres);
+	free(sc->triangles);
+	sc->spheres = spheres;
+	sc->triangles = triangles;
+}
+
 uint64_t bvh_bytes(uint64_t n)
 {
 	/* one primitive a leaf: n - 1 binary nodes, which exist twice while the workers'

@@ -16,7 +16,7 @@
 #include <unistd.h>
 
 #include "atomic.h"
-#include "bvh.h"
+#include "accel.h"
 #include "cli.h"
 #include "diag.h"
 #include "image.h"
@@ -766,7 +766,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	if (rc)
 		goto done;
 	t0 = now();
-	r.sc.bvh = bvh_build(&r.sc, ACCEL_BVH);
+	accel_build(&r.sc, ACCEL_BVH);
 	double bvh_s = now() - t0;
 	double fixed = lt.parse + lt.check + lt.eval + lower_s + bvh_s;
 	long cores = sysconf(_SC_NPROCESSORS_ONLN);

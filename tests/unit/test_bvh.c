@@ -740,6 +740,62 @@ static void test_deep(void)
 	scene_free(&b.sc);
 }
 
+/* The geometry of a hit primitive, which a renumbering must not change. */
+static void prim_geometry(const struct scene *sc, uint32_t prim, double g[9])
+{
+	memset(g, 0, 9 * sizeof *g);
+	uint32_t i = prim_index(prim);
+	if (prim_kind(prim) == PRIM_SPHERE) {
+		const struct sphere *s = &sc->spheres[i];
+		g[0] = s->center.x, g[1] = s->center.y, g[2] = s->center.z, g[3] = s->radius;
+	} else if (prim_kind(prim) == PRIM_TRIANGLE) {
+		for (int k = 0; k < 3; k++) {
+			struct vec3 v = sc->vertices[sc->triangles[i].v[k]];
+			g[3 * k] = v.x, g[3 * k + 1] = v.y, g[3 * k + 2] = v.z;
+		}
+	}
+}
+
+/* bvh_reorder: with the scene's primitives renumbered in leaf order, each ray still
+ * hits the same geometry at the same t and sees the same shadow. */
+static void test_reorder(void)
+{
+	struct builder b;
+	random_scene(&b, 3000, 1, v3s(0), false, 1);
+	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+	enum { NRAYS = 3000 };
+	static struct ray rays[NRAYS];
+	static struct hit before[NRAYS];
+	static bool found[NRAYS];
+	static double geom[NRAYS][9];
+	static struct vec3 pass[NRAYS];
+	for (int i = 0; i < NRAYS; i++) {
+		rays[i].o = rand_in_box(v3s(-2), v3s(2));
+		rays[i].d = rand_unit();
+		before[i] = (struct hit){ .t = INFINITY };
+		found[i] = bvh_intersect(bvh, &b.sc, &rays[i], &before[i]);
+		prim_geometry(&b.sc, before[i].prim, geom[i]);
+		pass[i] = bvh_transmittance(bvh, &b.sc, &rays[i], 3);
+	}
+	bvh_reorder(bvh, &b.sc);
+	CHECK(b.sc.nspheres > 20 && b.sc.ntriangles > 1000);
+	long hits = 0;
+	for (int i = 0; i < NRAYS; i++) {
+		struct hit h = { .t = INFINITY };
+		bool f = bvh_intersect(bvh, &b.sc, &rays[i], &h);
+		double g[9];
+		prim_geometry(&b.sc, h.prim, g);
+		CHECK(f == found[i] && h.t == before[i].t);
+		CHECK(!f || (h.b1 == before[i].b1 && h.b2 == before[i].b2 && memcmp(g, geom[i], sizeof g) == 0));
+		struct vec3 p = bvh_transmittance(bvh, &b.sc, &rays[i], 3);
+		CHECK(p.x == pass[i].x && p.y == pass[i].y && p.z == pass[i].z);
+		hits += f;
+	}
+	CHECK(hits > NRAYS / 4);
+	bvh_free(bvh);
+	scene_free(&b.sc);
+}
+
 int main(void)
 {
 	rng_seed(0x5eed);
@@ -749,5 +805,6 @@ int main(void)
 	test_huge_and_tiny();
 	test_far_offset();
 	test_deep();
+	test_reorder();
 	return check_result();
 }
