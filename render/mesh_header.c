@@ -77,77 +77,74 @@ static unsigned ply_type_size(const char *type)
 	return 0;
 }
 
-/* Whether a PLY header line of k words (k > 0), the line_no-th, is PLY's grammar; an
- * element's name must not be among the seen ones before it (which it joins). */
-static bool ply_line_ok(char word[][64], int k, int line_no, char seen[][64], int *nseen)
+/* Whether a PLY property line of k words declares known types: "property TYPE NAME" or
+ * "property list COUNT-TYPE ITEM-TYPE NAME". */
+static bool ply_property_ok(char word[][64], int k)
 {
-	if (line_no == 0)
-		return k == 1 && strcmp(word[0], "ply") == 0;
-	if (strcmp(word[0], "comment") == 0 || strcmp(word[0], "obj_info") == 0)
-		return true;
-	if (strcmp(word[0], "format") == 0)
-		return k == 3 && (strcmp(word[1], "ascii") == 0 || strcmp(word[1], "binary_little_endian") == 0 ||
-		                  strcmp(word[1], "binary_big_endian") == 0);
-	if (strcmp(word[0], "property") == 0)
-		return (k == 3 && ply_type_size(word[1])) ||
-		       (k == 5 && strcmp(word[1], "list") == 0 && ply_type_size(word[2]) && ply_type_size(word[3]));
-	if (strcmp(word[0], "element") == 0) {
-		if (k != 3 || *nseen == 16)
-			return false;
-		for (int i = 0; i < *nseen; i++)
-			if (strcmp(seen[i], word[1]) == 0)
-				return false;
-		snprintf(seen[(*nseen)++], 64, "%s", word[1]);
-		return true;
-	}
-	return k == 1 && strcmp(word[0], "end_header") == 0;
+	return (k == 3 && ply_type_size(word[1])) ||
+	       (k == 5 && strcmp(word[1], "list") == 0 && ply_type_size(word[2]) && ply_type_size(word[3]));
 }
 
-/* The elements a PLY header (its first len bytes) declares must fit in the rest of the
- * file, size bytes: each takes, per property, at least its binary size, or two bytes in
- * ASCII (a digit and a blank); a list at least its count. */
+/* Checks a PLY header (its first len bytes, up to and with its end_header line) line by
+ * line against PLY's grammar, and the elements it declares against the rest of the
+ * file, size bytes: each element takes, per property, at least its binary size, or two
+ * bytes in ASCII (a digit and a blank); a list at least its count. */
 static int ply_counts(const char *head, size_t len, long long size, const char *path, char *err,
                       size_t errlen)
 {
 	bool ascii = false;
-	double need = 0;               /* bytes, for the elements so far */
+	double need = 0;               /* bytes, for the elements before the current one */
 	double count = 0;              /* of the current element */
 	unsigned bytes = 0;            /* per current element, at least */
 	char name[64] = "";
-	char seen[16][64];             /* the element names so far */
+	char seen[16][64];             /* the element names so far: each may come once */
 	int nseen = 0;
-	for (size_t i = 0, line_no = 0;; line_no++) {
-		char word[5][64];
-		int k = 0;
-		if (i < len) {
-			const char *eol = memchr(head + i, '\n', len - i);
-			size_t n = eol ? (size_t)(eol - (head + i)) : len - i;
-			char line[256];
-			snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line ? n : sizeof line - 1), head + i);
-			i += n + 1;
-			k = sscanf(line, "%63s %63s %63s %63s %63s", word[0], word[1], word[2], word[3], word[4]);
-			if (k > 0 && !ply_line_ok(word, k, (int)line_no, seen, &nseen))
-				return mesh_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, '%s', "
-				                 "is not PLY", path, line_no + 1, line);
+	for (size_t i = 0, line_no = 0; i < len; line_no++) {
+		const char *eol = memchr(head + i, '\n', len - i);
+		size_t n = eol ? (size_t)(eol - (head + i)) : len - i;
+		char line[256], word[5][64];
+		snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line ? n : sizeof line - 1), head + i);
+		i += n + 1;
+		int k = sscanf(line, "%63s %63s %63s %63s %63s", word[0], word[1], word[2], word[3], word[4]);
+		bool ok = true, element = false, end = false;
+		if (k <= 0) {
+			continue;      /* a blank line */
+		} else if (line_no == 0) {
+			ok = k == 1 && strcmp(word[0], "ply") == 0;
+		} else if (strcmp(word[0], "comment") == 0 || strcmp(word[0], "obj_info") == 0) {
+		} else if (strcmp(word[0], "format") == 0) {
+			ascii = k == 3 && strcmp(word[1], "ascii") == 0;
+			ok = k == 3 && (ascii || strcmp(word[1], "binary_little_endian") == 0 ||
+			                strcmp(word[1], "binary_big_endian") == 0);
+		} else if (strcmp(word[0], "property") == 0) {
+			ok = ply_property_ok(word, k);
+			if (ok)
+				bytes += ascii ? 2 : ply_type_size(k == 5 ? word[2] : word[1]);
+		} else if (strcmp(word[0], "element") == 0) {
+			ok = element = k == 3 && nseen < 16;
+			for (int e = 0; ok && e < nseen; e++)
+				ok = strcmp(seen[e], word[1]) != 0;
+		} else {
+			ok = end = k == 1 && strcmp(word[0], "end_header") == 0;
 		}
-		bool element = k >= 3 && strcmp(word[0], "element") == 0;
-		if (element || i >= len) {
-			need += count * (bytes ? bytes : 1);
-			if (need > (double)size)
-				return mesh_fail(err, errlen, "malformed mesh file '%s': its PLY header declares %.0f "
-						 "'%s' elements, more than its %lld bytes can hold", path, count, name, size);
-			if (!element)
-				return 0;
-			count = fmax(strtod(word[2], NULL), 0); /* assimp reads a minus sign as 0 */
-			bytes = 0;
-			snprintf(name, sizeof name, "%s", word[1]);
-		} else if (k >= 2 && strcmp(word[0], "format") == 0) {
-			ascii = strcmp(word[1], "ascii") == 0;
-		} else if (k >= 2 && strcmp(word[0], "property") == 0) {
-			bool list = k >= 3 && strcmp(word[1], "list") == 0;
-			bytes += ascii ? 2 : ply_type_size(list ? word[2] : word[1]);
-		}
+		if (!ok)
+			return mesh_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, '%s', "
+			                 "is not PLY", path, line_no + 1, line);
+		if (!element && !end)
+			continue;
+		/* the element before this line is complete */
+		need += count * (bytes ? bytes : 1);
+		if (need > (double)size)
+			return mesh_fail(err, errlen, "malformed mesh file '%s': its PLY header declares %.0f "
+					 "'%s' elements, more than its %lld bytes can hold", path, count, name, size);
+		if (end)
+			return 0;
+		count = fmax(strtod(word[2], NULL), 0); /* assimp reads a minus sign as 0 */
+		bytes = 0;
+		snprintf(name, sizeof name, "%s", word[1]);
+		snprintf(seen[nseen++], sizeof seen[0], "%s", word[1]);
 	}
+	return 0;
 }
 
 /* Skips blanks, line ends and comment lines, as assimp's OFF reader does between tokens. */

@@ -308,6 +308,25 @@ static void test_errors(void)
 		             "its OFF header declares 1000 vertices and 2000 faces, more than its");
 	}
 	unlink(path);
+	/* a PLY header off PLY's grammar, on which assimp 5.2 can write past its buffers:
+	 * each refused at its line */
+	static const struct { const char *text, *want; } ply[] = {
+		{ "ply0ply\nformat ascii 1.0\nend_header\n0\n", "line 1 of its PLY header, 'ply0ply', is not PLY" },
+		{ "ply\nformat text 1.0\nend_header\n0\n", "line 2 of its PLY header, 'format text 1.0', is not PLY" },
+		{ "ply\nformat ascii 1.0\n\nelement vertex 1\nproperty quad x\nend_header\n0\n",
+		  "line 5 of its PLY header, 'property quad x', is not PLY" },
+		{ "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nelement vertex 1\nend_header\n0 0\n",
+		  "line 5 of its PLY header, 'element vertex 1', is not PLY" },
+		{ "ply\nformat ascii 1.0\ncomment ok\nvertex 1\nend_header\n0\n",
+		  "line 4 of its PLY header, 'vertex 1', is not PLY" },
+	};
+	snprintf(path, sizeof path, "%s/bad.ply", tmp);
+	for (size_t i = 0; i < sizeof ply / sizeof *ply; i++) {
+		FILE *f = fopen(path, "w");
+		CHECK(f && fputs(ply[i].text, f) >= 0 && fclose(f) == 0);
+		expect_error(path, false, "malformed mesh file '", ply[i].want);
+	}
+	unlink(path);
 	rmdir(tmp);
 	/* and its Triangulate would abort the process on this one */
 	expect_error(fixture("empty_faces.ply"), false, "malformed mesh file '", "face 1 has no vertices");
