@@ -8,6 +8,8 @@ struct arena;
 
 struct arena *arena_new(void);
 void arena_free(struct arena *a);
+/* Releases everything allocated so far; the arena stays usable. */
+void arena_reset(struct arena *a);
 /* Zeroed, aligned for pointers and doubles (not for long double or vector types); never
  * NULL (exits 4 when memory runs out). */
 void *arena_alloc(struct arena *a, size_t size);

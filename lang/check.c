@@ -27,7 +27,8 @@ struct name_entry {
 };
 
 struct checker {
-	struct arena *arena;
+	struct arena *arena;       /* bindings and the symbol table: kept for the whole load */
+	struct arena *nodes;       /* the syntax trees of included files */
 	struct diag *diag;
 	struct name_entry **buckets;
 	size_t nbuckets, nentries;
@@ -38,8 +39,10 @@ struct checker {
 	int include_depth;
 	unsigned nincludes;        /* files read by includes so far, against LANG_MAX_INCLUDES */
 	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
-	struct ast *once[KW_COUNT_ALL]; /* camera, skybox, samples, max_depth seen so far */
-	struct ast_list *root;     /* the scene file's statements, to find definitions that come late */
+	/* camera, skybox, samples, max_depth seen so far, by place: the statement itself
+	 * may be gone when the file is checked one statement at a time */
+	struct { bool seen; struct span at; } once[KW_COUNT_ALL];
+	struct ast_list *root;     /* the scene file's statements, to find definitions that come late, or NULL */
 	const char *defining;      /* the material whose block is being checked, or NULL */
 	bool include_failed;       /* an include could not be read: its names are unknown, not wrong */
 };
@@ -785,11 +788,12 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH) {
 		if (c->loop_depth)
 			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a for loop", kw_name(kw));
-		else if (c->once[kw]) {
+		else if (c->once[kw].seen) {
 			diag_error(c->diag, s->u.stmt.kw_span, "a scene has at most one '%s'", kw_name(kw));
-			diag_note(c->diag, c->once[kw]->u.stmt.kw_span, "the first '%s' is here", kw_name(kw));
+			diag_note(c->diag, c->once[kw].at, "the first '%s' is here", kw_name(kw));
 		} else {
-			c->once[kw] = s;
+			c->once[kw].seen = true;
+			c->once[kw].at = s->u.stmt.kw_span;
 		}
 	}
 	if (s->u.stmt.value) {   /* samples N, max_depth N */
@@ -866,7 +870,7 @@ static void check_include(struct checker *c, struct ast *inc)
 		free(real);
 		return;
 	}
-	inc->u.include.body = lang_parse(c->arena, c->diag, src);
+	inc->u.include.body = lang_parse(c->nodes, c->arena, c->diag, src);
 	inc->u.include.loaded = true;
 	c->include_stack[++c->include_depth] = real;
 	check_stmts(c, &inc->u.include.body);
@@ -893,74 +897,95 @@ static void unknown_statement(struct checker *c, struct ast *s)
 	diag_error(c->diag, s->u.item.name_span, "unknown statement '%s'%s", name, hint);
 }
 
-static void check_stmts(struct checker *c, struct ast_list *stmts)
+void check_statement(struct checker *c, struct ast *s)
 {
-	for (size_t i = 0; i < stmts->n && !diag_stopped(c->diag); i++) {
-		struct ast *s = stmts->v[i];
-		switch (s->kind) {
-		case AST_LET: {
-			enum ast_type t = check_expr(c, s->u.let.value);
-			if (t == TYPE_STR || t == TYPE_PIGMENT) {
-				diag_error(c->diag, s->u.let.value->span, "a binding holds a number or a vector, not %s",
-				           type_name(t));
-				t = TYPE_NONE;
-			}
-			s->u.let.b = bind(c, s->u.let.name, s->u.let.name_span, BIND_VALUE, t);
-			if (s->u.let.b && t == TYPE_NONE)
-				s->u.let.b->used = true; /* already reported; no "never used" on top */
+	switch (s->kind) {
+	case AST_LET: {
+		enum ast_type t = check_expr(c, s->u.let.value);
+		if (t == TYPE_STR || t == TYPE_PIGMENT) {
+			diag_error(c->diag, s->u.let.value->span, "a binding holds a number or a vector, not %s",
+			           type_name(t));
+			t = TYPE_NONE;
+		}
+		s->u.let.b = bind(c, s->u.let.name, s->u.let.name_span, BIND_VALUE, t);
+		if (s->u.let.b && t == TYPE_NONE)
+			s->u.let.b->used = true; /* already reported; no "never used" on top */
+		break;
+	}
+	case AST_INCLUDE:
+		check_include(c, s);
+		c->include_failed |= !s->u.include.loaded;
+		break;
+	case AST_FOR:
+		check_value(c, s->u.loop.from, S_NUM, "the for loop's start");
+		check_value(c, s->u.loop.to, S_NUM, "the for loop's end");
+		if (c->loop_depth == LANG_MAX_NESTING) { /* includes can nest loops past one file's brackets */
+			diag_error(c->diag, s->u.loop.var_span, "for loops nested more than %d deep", LANG_MAX_NESTING);
 			break;
 		}
-		case AST_INCLUDE:
-			check_include(c, s);
-			c->include_failed |= !s->u.include.loaded;
-			break;
-		case AST_FOR:
-			check_value(c, s->u.loop.from, S_NUM, "the for loop's start");
-			check_value(c, s->u.loop.to, S_NUM, "the for loop's end");
-			if (c->loop_depth == LANG_MAX_NESTING) { /* includes can nest loops past one file's brackets */
-				diag_error(c->diag, s->u.loop.var_span, "for loops nested more than %d deep", LANG_MAX_NESTING);
-				break;
-			}
-			/* the loop variable has a scope of its own, around the body's: the body may
-			 * rebind its name (let i = i * 10) */
-			push_scope(c);
-			c->loop_depth++;
-			s->u.loop.b = bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
-			push_scope(c);
-			check_stmts(c, &s->u.loop.body);
-			pop_scope(c);
-			c->loop_depth--;
-			pop_scope(c);
-			break;
-		case AST_UNKNOWN_STMT:
-			unknown_statement(c, s);
-			break;
-		case AST_BLOCK_STMT:
-			check_block_stmt(c, s);
-			break;
-		default:
-			break;
-		}
+		/* the loop variable has a scope of its own, around the body's: the body may
+		 * rebind its name (let i = i * 10) */
+		push_scope(c);
+		c->loop_depth++;
+		s->u.loop.b = bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
+		push_scope(c);
+		check_stmts(c, &s->u.loop.body);
+		pop_scope(c);
+		c->loop_depth--;
+		pop_scope(c);
+		break;
+	case AST_UNKNOWN_STMT:
+		unknown_statement(c, s);
+		break;
+	case AST_BLOCK_STMT:
+		check_block_stmt(c, s);
+		break;
+	default:
+		break;
 	}
 }
 
-unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts)
+static void check_stmts(struct checker *c, struct ast_list *stmts)
+{
+	for (size_t i = 0; i < stmts->n && !diag_stopped(c->diag); i++)
+		check_statement(c, stmts->v[i]);
+}
+
+struct checker *checker_new(struct arena *nodes, struct arena *keep, struct diag *d, const struct source *src,
+                            struct ast_list *root)
 {
 	struct checker *c = xcalloc(1, sizeof *c);
-	c->arena = a;
+	c->arena = keep;
+	c->nodes = nodes;
 	c->diag = d;
 	c->nbuckets = 256;
 	c->buckets = xcalloc(c->nbuckets, sizeof *c->buckets);
 	c->include_stack[0] = realpath(src->path, NULL); /* NULL for standard input */
-	c->root = stmts;
+	c->root = root;
 	push_scope(c);
-	check_stmts(c, stmts);
-	if (!diag_stopped(d))
+	return c;
+}
+
+unsigned checker_slots(const struct checker *c)
+{
+	return c->nslots;
+}
+
+void checker_free(struct checker *c, bool finished)
+{
+	if (finished && !diag_stopped(c->diag))
 		pop_scope(c);
-	unsigned nslots = c->nslots;
 	free(c->include_stack[0]);
 	free(c->buckets);
 	free(c);
+}
+
+unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts)
+{
+	struct checker *c = checker_new(a, a, d, src, stmts);
+	check_stmts(c, stmts);
+	unsigned nslots = checker_slots(c);
+	checker_free(c, true);
 	return nslots;
 }
 
@@ -969,7 +994,12 @@ int lang_read_file(const char *path, char **text, uint32_t *len)
 	FILE *f = fopen(path, "rb");
 	if (!f)
 		return errno;
-	size_t cap = 1 << 16, n = 0;
+	/* a file is read into a buffer of its size at once (one byte more, to see its end):
+	 * doubling from 64 KiB would copy a 60 MB scene twice over and touch twice its pages */
+	struct stat st;
+	size_t cap = fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size < DIAG_MAX_SOURCE_BYTES
+	           ? (size_t)st.st_size + 2 : 1 << 16;
+	size_t n = 0;
 	char *buf = xmalloc(cap);
 	for (;;) {
 		if (n + 1 >= cap) {

@@ -27,20 +27,50 @@ void diag_init(struct diag *d, FILE *out)
 	d->max_errors = 20;
 }
 
+static void free_source(struct source *s)
+{
+	free(s->path);
+	free(s->dir);
+	free(s->text);
+	free(s->lines);
+	free(s);
+}
+
 void diag_fini(struct diag *d)
 {
 	diag_flush(d);
 	free(d->records);
-	for (size_t i = 0; i < d->nfiles; i++) {
-		struct source *s = d->files[i];
-		free(s->path);
-		free(s->dir);
-		free(s->text);
-		free(s->lines);
-		free(s);
-	}
+	for (size_t i = 0; i < d->nfiles; i++)
+		free_source(d->files[i]);
 	free(d->files);
 	memset(d, 0, sizeof *d);
+}
+
+struct diag_mark diag_mark(const struct diag *d)
+{
+	return (struct diag_mark){ d->nrecords, d->nfiles, d->next_base, d->errors, d->warnings, d->stopped, d->dropped };
+}
+
+bool diag_said(const struct diag *d, struct diag_mark m)
+{
+	return d->nrecords != m.nrecords || d->errors != m.errors || d->warnings != m.warnings || d->stopped != m.stopped;
+}
+
+void diag_rewind(struct diag *d, struct diag_mark m)
+{
+	for (size_t i = m.nrecords; i < d->nrecords; i++) {
+		free(d->records[i].text);
+		free(d->records[i].key);
+	}
+	for (size_t i = m.nfiles; i < d->nfiles; i++)
+		free_source(d->files[i]);
+	d->nrecords = m.nrecords;
+	d->nfiles = m.nfiles;
+	d->next_base = m.next_base;
+	d->errors = m.errors;
+	d->warnings = m.warnings;
+	d->stopped = m.stopped;
+	d->dropped = m.dropped;
 }
 
 static char *dir_of(const char *path)

@@ -60,6 +60,20 @@ void diag_fini(struct diag *d);
  * (syntax, names, values) report in their own order; the user reads the file's. */
 void diag_flush(struct diag *d);
 
+/* The state of the diagnostics and the files at one moment, to go back to. */
+struct diag_mark {
+	size_t nrecords, nfiles;
+	uint32_t next_base;
+	int errors, warnings;
+	bool stopped, dropped;
+};
+struct diag_mark diag_mark(const struct diag *d);
+/* Whether anything (an error, a warning) was reported since m. */
+bool diag_said(const struct diag *d, struct diag_mark m);
+/* Forgets what was reported and the files registered since m (nothing was flushed
+ * since): for a load that starts over another way. */
+void diag_rewind(struct diag *d, struct diag_mark m);
+
 /* Registers a loaded file; takes ownership of text (malloc'd, len bytes + NUL).
  * Returns the source, or NULL when the total would exceed DIAG_MAX_SOURCE_BYTES
  * (text is then freed). */

@@ -17,6 +17,7 @@ struct evaluator {
 	struct scene_desc *out;
 	struct value *slots;       /* current value of each binding; a material's is its index */
 	bool *bad;                 /* the binding's value could not be computed */
+	size_t nslots, cap_slots, cap_bad;
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
 	bool exhausted;            /* a limit on the whole evaluation was reached: stop */
@@ -713,6 +714,12 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 
 static void eval_stmts(struct evaluator *ev, struct ast_list *stmts);
 
+/* Too many errors, or a limit on the whole evaluation reached: nothing more runs. */
+static bool stopped(const struct evaluator *ev)
+{
+	return diag_stopped(ev->diag) || ev->exhausted;
+}
+
 static void eval_for(struct evaluator *ev, struct ast *s)
 {
 	double from, to;
@@ -733,7 +740,7 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 	unsigned slot = s->u.loop.b->slot;
 	ev->loops[ev->nloops].loop = s;
 	ev->nloops++;
-	for (double i = from; i < to && !diag_stopped(ev->diag) && !ev->exhausted; i++) {
+	for (double i = from; i < to && !stopped(ev); i++) {
 		ev->loops[ev->nloops - 1].i = i;
 		ev->slots[slot].v[0] = i;
 		eval_stmts(ev, &s->u.loop.body);
@@ -741,56 +748,91 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 	ev->nloops--;
 }
 
+static void eval_stmt(struct evaluator *ev, struct ast *s)
+{
+	switch (s->kind) {
+	case AST_LET: {
+		unsigned slot = s->u.let.b->slot;
+		ev->bad[slot] = !eval_expr(ev, s->u.let.value, &ev->slots[slot]);
+		break;
+	}
+	case AST_INCLUDE:
+		eval_stmts(ev, &s->u.include.body);
+		break;
+	case AST_FOR:
+		eval_for(ev, s);
+		break;
+	case AST_BLOCK_STMT: {
+		const struct source *src = diag_source_at(ev->diag, s->span.start);
+		double depth;
+		switch (s->u.stmt.kw) {
+		case KW_CAMERA: eval_camera(ev, s); break;
+		case KW_LIGHT: eval_light(ev, s); break;
+		case KW_SKYBOX: eval_skybox(ev, s, src); break;
+		case KW_SAMPLES: eval_samples(ev, s); break;
+		case KW_MAX_DEPTH:
+			if (whole_of(ev, s->u.stmt.value, 1, LANG_MAX_DEPTH, "max_depth", &depth))
+				ev->out->max_depth = (int)depth;
+			break;
+		case KW_MATERIAL:
+			ev->slots[s->u.stmt.b->slot].v[0] =
+				eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span);
+			break;
+		default:
+			eval_object(ev, s, src);
+			break;
+		}
+		break;
+	}
+	default:
+		break;
+	}
+}
+
 static void eval_stmts(struct evaluator *ev, struct ast_list *stmts)
 {
-	for (size_t i = 0; i < stmts->n && !diag_stopped(ev->diag) && !ev->exhausted; i++) {
-		struct ast *s = stmts->v[i];
-		switch (s->kind) {
-		case AST_LET: {
-			unsigned slot = s->u.let.b->slot;
-			ev->bad[slot] = !eval_expr(ev, s->u.let.value, &ev->slots[slot]);
-			break;
-		}
-		case AST_INCLUDE:
-			eval_stmts(ev, &s->u.include.body);
-			break;
-		case AST_FOR:
-			eval_for(ev, s);
-			break;
-		case AST_BLOCK_STMT: {
-			const struct source *src = diag_source_at(ev->diag, s->span.start);
-			double depth;
-			switch (s->u.stmt.kw) {
-			case KW_CAMERA: eval_camera(ev, s); break;
-			case KW_LIGHT: eval_light(ev, s); break;
-			case KW_SKYBOX: eval_skybox(ev, s, src); break;
-			case KW_SAMPLES: eval_samples(ev, s); break;
-			case KW_MAX_DEPTH:
-				if (whole_of(ev, s->u.stmt.value, 1, LANG_MAX_DEPTH, "max_depth", &depth))
-					ev->out->max_depth = (int)depth;
-				break;
-			case KW_MATERIAL:
-				ev->slots[s->u.stmt.b->slot].v[0] =
-					eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span);
-				break;
-			default:
-				eval_object(ev, s, src);
-				break;
-			}
-			break;
-		}
-		default:
-			break;
-		}
-	}
+	for (size_t i = 0; i < stmts->n && !stopped(ev); i++)
+		eval_stmt(ev, stmts->v[i]);
+}
+
+struct evaluator *evaluator_new(struct diag *d, struct scene_desc *out)
+{
+	struct evaluator *ev = xcalloc(1, sizeof *ev);
+	ev->diag = d;
+	ev->out = out;
+	return ev;
+}
+
+/* Makes room for nslots bindings; a new one is not bad until its let says so (a loop
+ * variable's and a material's never are). */
+static void grow_slots(struct evaluator *ev, size_t nslots)
+{
+	if (nslots <= ev->nslots)
+		return;
+	xgrow((void **)&ev->slots, &ev->cap_slots, nslots, sizeof *ev->slots);
+	xgrow((void **)&ev->bad, &ev->cap_bad, nslots, sizeof *ev->bad);
+	memset(ev->bad + ev->nslots, 0, (nslots - ev->nslots) * sizeof *ev->bad);
+	ev->nslots = nslots;
+}
+
+void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots)
+{
+	grow_slots(ev, nslots);
+	if (!stopped(ev))
+		eval_stmt(ev, stmt);
+}
+
+void evaluator_free(struct evaluator *ev)
+{
+	free(ev->slots);
+	free(ev->bad);
+	free(ev);
 }
 
 void lang_eval(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out)
 {
-	struct evaluator ev = { .diag = d, .out = out };
-	ev.slots = xcalloc(nslots, sizeof *ev.slots);
-	ev.bad = xcalloc(nslots, sizeof *ev.bad);
-	eval_stmts(&ev, stmts);
-	free(ev.slots);
-	free(ev.bad);
+	struct evaluator *ev = evaluator_new(d, out);
+	grow_slots(ev, nslots);
+	eval_stmts(ev, stmts);
+	evaluator_free(ev);
 }

@@ -19,4 +19,11 @@
  * returned) into out, which scene_desc_init prepared. Range errors go to d. */
 void lang_eval(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out);
 
+/* The same one statement at a time, for a file evaluated as it is parsed: each
+ * statement after check_statement accepted it, with checker_slots' count. */
+struct evaluator;
+struct evaluator *evaluator_new(struct diag *d, struct scene_desc *out);
+void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots);
+void evaluator_free(struct evaluator *ev);
+
 #endif

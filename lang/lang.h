@@ -9,9 +9,15 @@
 
 struct arena;
 
+/* Called with each top-level statement as soon as it is parsed; false stops the parse. */
+typedef bool lang_statement_fn(void *arg, struct ast *stmt);
+
 /* State shared by the scanner and the parser of one source file. */
 struct lang_ctx {
-	struct arena *arena;
+	struct arena *arena;          /* the syntax tree's nodes */
+	struct arena *text;           /* the text of names and strings, which bindings keep */
+	lang_statement_fn *each;      /* NULL: the statements are collected in stmts */
+	void *each_arg;
 	struct diag *diag;
 	const struct source *src;
 	struct ast_list stmts;        /* the result */
@@ -24,8 +30,15 @@ struct lang_ctx {
 	struct { struct span sp; char ch; } open[LANG_MAX_NESTING];
 };
 
-/* Parses src into its statements, allocated in a. Syntax errors go to d; the result
- * holds what could be recovered. */
-struct ast_list lang_parse(struct arena *a, struct diag *d, const struct source *src);
+/* Parses src into its statements, their nodes allocated in nodes and the text of their
+ * names and strings in text (which may be the same arena). Syntax errors go to d; the
+ * result holds what could be recovered. */
+struct ast_list lang_parse(struct arena *nodes, struct arena *text, struct diag *d, const struct source *src);
+/* Parses src one top-level statement at a time: each goes to each(arg, stmt) (NULL for
+ * one that error recovery dropped), and its nodes are released (arena_reset(nodes))
+ * when that returns, so that a file of a million statements never holds more than one
+ * tree. Names and strings stay in text. Stops early when each returns false. */
+void lang_parse_each(struct arena *nodes, struct arena *text, struct diag *d, const struct source *src,
+                     lang_statement_fn *each, void *arg);
 
 #endif

@@ -10,6 +10,7 @@
 #include "check.h"
 #include "eval.h"
 #include "lang.h"
+#include "scene_desc.h"
 #include "xalloc.h"
 
 /* Reads standard input whole, like lang_read_file. */
@@ -46,6 +47,73 @@ static double now(void)
 	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+/* The whole file parsed, then checked, then evaluated: every diagnostic of each phase
+ * before the next phase runs, which decides which of them count against the limit on
+ * errors (diag.h), and gives "defined after its use" notes the whole file. */
+static void load_in_phases(struct diag *d, const struct source *src, struct scene_desc *out, struct load_times *t)
+{
+	double t0 = now();
+	struct arena *a = arena_new();
+	struct ast_list stmts = lang_parse(a, a, d, src);
+	double t1 = now();
+	t->parse += t1 - t0;
+	unsigned nslots = lang_check(a, d, src, &stmts); /* parses included files too */
+	double t2 = now();
+	t->check += t2 - t1;
+	if (d->errors == 0)
+		lang_eval(d, &stmts, nslots, out);
+	t->eval += now() - t2;
+	arena_free(a);
+}
+
+/* A load one statement at a time: parsed, checked, evaluated and released, so that a
+ * file of a million statements never holds a million syntax trees. It goes on only while
+ * nothing has been reported: the first diagnostic makes it give up (see lang_load_scene). */
+struct stream {
+	struct diag *d;
+	struct diag_mark quiet;        /* what the diagnostics were when it started */
+	struct checker *checker;
+	struct evaluator *ev;
+	double check_s, eval_s;
+};
+
+static bool stream_statement(void *arg, struct ast *stmt)
+{
+	struct stream *st = arg;
+	if (diag_said(st->d, st->quiet))
+		return false;
+	double t0 = now();
+	check_statement(st->checker, stmt);
+	double t1 = now();
+	st->check_s += t1 - t0;
+	if (diag_said(st->d, st->quiet))
+		return false;
+	eval_statement(st->ev, stmt, checker_slots(st->checker));
+	st->eval_s += now() - t1;
+	return !diag_said(st->d, st->quiet);
+}
+
+/* Returns whether the load went through without a word; if not, out holds part of the
+ * scene and d what the first statements said. */
+static bool load_streaming(struct diag *d, const struct source *src, struct scene_desc *out, struct load_times *t)
+{
+	double t0 = now();
+	struct arena *nodes = arena_new(), *keep = arena_new();
+	struct stream st = { .d = d, .quiet = diag_mark(d) };
+	st.checker = checker_new(nodes, keep, d, src, NULL);
+	st.ev = evaluator_new(d, out);
+	lang_parse_each(nodes, keep, d, src, stream_statement, &st);
+	bool quiet = !diag_said(d, st.quiet);
+	checker_free(st.checker, quiet); /* the warnings about unused names come last, as in phases */
+	evaluator_free(st.ev);
+	arena_free(nodes);
+	arena_free(keep);
+	t->check += st.check_s;
+	t->eval += st.eval_s;
+	t->parse += now() - t0 - st.check_s - st.eval_s;
+	return quiet;
+}
+
 enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out,
                                  struct load_times *times)
 {
@@ -63,17 +131,17 @@ enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_
 	}
 	const struct source *src = diag_add_source(d, from_stdin ? "<stdin>" : path, text, len, NULL,
 	                                           (struct span){ 0, 0 });
-	struct arena *a = arena_new();
-	struct ast_list stmts = lang_parse(a, d, src);
-	double t1 = now();
-	t.parse = t1 - t0;
-	unsigned nslots = lang_check(a, d, src, &stmts); /* parses included files too */
-	double t2 = now();
-	t.check = t2 - t1;
-	if (d->errors == 0)
-		lang_eval(d, &stmts, nslots, out);
-	t.eval = now() - t2;
-	arena_free(a);
+	t.parse = now() - t0;
+	/* Most scenes say nothing and load one statement at a time. One that has something
+	 * to say is loaded again in phases, from the start, so that what it says is exactly
+	 * what the phases say; the statements before the first message are read twice. */
+	struct diag_mark start = diag_mark(d);
+	if (!load_streaming(d, src, out, &t)) {
+		diag_rewind(d, start);
+		scene_desc_free(out);
+		scene_desc_init(out);
+		load_in_phases(d, src, out, &t);
+	}
 	if (times)
 		*times = t;
 	return d->errors ? LOAD_SCENE_ERROR : LOAD_OK;

@@ -28,6 +28,12 @@ static struct ast *not_a_vector(struct lang_ctx *ctx, struct span sp);
 static char *reserved(struct lang_ctx *ctx, struct span sp);
 static struct ast_list list1(struct lang_ctx *ctx, struct ast *e);
 static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct ast *e);
+static bool statement(struct lang_ctx *ctx, struct ast_list *list, struct ast *stmt, bool file_level);
+/* Whether the statement being reduced is one of the file's, not of a loop's body: then
+ * bison's state stack (of its yacc.c skeleton) holds the start state, the file's list
+ * and the statement, and nothing else. The grammar itself cannot tell the two lists
+ * apart without changing the automaton, and with it how errors are recovered from. */
+#define FILE_LEVEL (yyssp - yyss == 2)
 static const struct ast_list no_list;
 static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const char *msg);
 #define A (ctx->arena)
@@ -95,7 +101,7 @@ scene:
 ;
 stmts:
 	%empty                              { $$ = no_list; }
-|	stmts stmt                          { $$ = append(ctx, $1, $2); }
+|	stmts stmt                          { $$ = $1; if (!statement(ctx, &$$, $2, FILE_LEVEL)) YYABORT; }
 ;
 stmt:
 	LET binder '=' expr                 { $$ = ast_let(A, @$, $2, @2, $4); }
@@ -233,7 +239,7 @@ static struct ast *string_node(struct lang_ctx *ctx, struct span sp, char *text,
 
 static char *reserved(struct lang_ctx *ctx, struct span sp)
 {
-	char *word = arena_strndup(ctx->arena, ctx->src->text + (sp.start - ctx->src->base), sp.end - sp.start);
+	char *word = arena_strndup(ctx->text, ctx->src->text + (sp.start - ctx->src->base), sp.end - sp.start);
 	diag_error(ctx->diag, sp, "'%s' is a reserved word; it cannot be a name", word);
 	return word;
 }
@@ -255,6 +261,21 @@ static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct as
 {
 	ast_list_push(ctx->arena, &l, e);
 	return l;
+}
+
+/* A statement goes on the list, or, when it is the file's and they are handed on, to
+ * ctx->each and is then released. Nothing the parser still holds is in the node arena
+ * then: the statements before it went the same way, and a lookahead token's text is in
+ * the text arena. Returns false to stop the parse. */
+static bool statement(struct lang_ctx *ctx, struct ast_list *list, struct ast *stmt, bool file_level)
+{
+	if (!ctx->each || !file_level) {
+		ast_list_push(ctx->arena, list, stmt);
+		return true;
+	}
+	bool go_on = ctx->each(ctx->each_arg, stmt);
+	arena_reset(ctx->arena);
+	return go_on;
 }
 
 /* Long operator chains nest without brackets; evaluation recurses on them, so they

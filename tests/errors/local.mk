@@ -209,3 +209,6 @@ TESTS += tests/errors/for_header.scn
 EXTRA_DIST += tests/errors/for_header.scn tests/errors/for_header.err
 TESTS += tests/errors/lex_number_consequence.scn
 EXTRA_DIST += tests/errors/lex_number_consequence.scn tests/errors/lex_number_consequence.err
+# a scene loaded one statement at a time until its first message, then again in phases
+TESTS += tests/errors/late_error.scn
+EXTRA_DIST += tests/errors/late_error.scn tests/errors/late_error.err
