@@ -16,13 +16,18 @@ static bool sphere_roots(const struct sphere *s, const struct ray *r, double *t0
 {
 	struct vec3 f = vsub(r->o, s->center);
 	double b = vdot(f, r->d);
+	double c = vdot(f, f) - s->radius * s->radius;
+	/* the origin outside and the sphere behind it: the roots' product c is positive and
+	 * their sum -2b negative, as the roots below would come out, without the square
+	 * root and the division */
+	if (c > 0 && b > 0)
+		return false;
 	/* r^2 - |f - (f.d) d|^2: the squared half-chord, free of the cancellation in
 	 * b^2 - (f.f - r^2) when the sphere is small or far */
 	struct vec3 perp = vsub(f, vscale(r->d, b));
 	double disc = s->radius * s->radius - vdot(perp, perp);
 	if (disc < 0)
 		return false;
-	double c = vdot(f, f) - s->radius * s->radius;
 	double q = -(b + copysign(sqrt(disc), b));
 	if (q == 0)
 		return false; /* origin on the sphere and the ray tangent to it */
