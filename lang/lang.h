@@ -37,7 +37,9 @@ struct ast_list lang_parse(struct arena *nodes, struct arena *text, struct diag 
 /* Parses src one top-level statement at a time: each goes to each(arg, stmt) (NULL for
  * one that error recovery dropped), and its nodes are released (arena_reset(nodes))
  * when that returns, so that a file of a million statements never holds more than one
- * tree. Names and strings stay in text. Stops early when each returns false. */
+ * tree. Names and strings stay in text. Stops early when each returns false. For a load
+ * that gives up at the first message: the lists of expected tokens in its syntax errors
+ * may be inexact (parser_quick.c). */
 void lang_parse_each(struct arena *nodes, struct arena *text, struct diag *d, const struct source *src,
                      lang_statement_fn *each, void *arg);
 

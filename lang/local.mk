@@ -9,6 +9,12 @@ lang_libscnlang_a_SOURCES = \
 	%D%/lexer.l \
 	%D%/parser.y
 BUILT_SOURCES += %D%/parser.h
+# parser.y once more, without LAC: see parser_quick.c
+lang_libscnlang_a_SOURCES += %D%/parser_quick.c
+BUILT_SOURCES += %D%/parser_nolac.c
+EXTRA_DIST += %D%/parser_nolac.c
+%D%/parser_nolac.c: %D%/parser.y
+	$(AM_V_GEN)$(YACC) -Wall -Wno-yacc -Fparse.lac=none -o $@ $(srcdir)/%D%/parser.y
 lang_libscnlang_a_SOURCES += \
 	%D%/builtins.c %D%/builtins.h \
 	%D%/check.c %D%/check.h \
