@@ -68,8 +68,11 @@ struct diag_mark {
 	bool stopped, dropped;
 };
 struct diag_mark diag_mark(const struct diag *d);
-/* Whether anything (an error, a warning) was reported since m. */
-bool diag_said(const struct diag *d, struct diag_mark m);
+/* Whether what was reported since m would be printed the same had it been reported in
+ * another order: warnings only (the order decides which errors count against the limit),
+ * and no more of them than are shown. (Diagnostics at one place stay in the order they
+ * were reported in; front end warnings at one place are all the same words.) */
+bool diag_any_order(const struct diag *d, struct diag_mark m);
 /* Forgets what was reported and the files registered since m (nothing was flushed
  * since): for a load that starts over another way. */
 void diag_rewind(struct diag *d, struct diag_mark m);

@@ -85,11 +85,13 @@ static void load_in_phases(struct diag *d, const struct source *src, struct scen
 }
 
 /* A load one statement at a time: parsed, checked, evaluated and released, so that a
- * file of a million statements never holds a million syntax trees. It goes on only while
- * nothing has been reported: the first diagnostic makes it give up (see lang_load_scene). */
+ * file of a million statements never holds a million syntax trees. Its diagnostics come
+ * in another order than the phases', so it goes on only while that makes no difference
+ * (diag_any_order: warnings only, which check.c and eval.c give once per place); the
+ * first error makes it give up (see lang_load_scene). */
 struct stream {
 	struct diag *d;
-	struct diag_mark quiet;        /* what the diagnostics were when it started */
+	struct diag_mark start;        /* what the diagnostics were when it started */
 	struct checker *checker;
 	struct evaluator *ev;
 	double check_s, eval_s;
@@ -98,38 +100,39 @@ struct stream {
 static bool stream_statement(void *arg, struct ast *stmt)
 {
 	struct stream *st = arg;
-	if (diag_said(st->d, st->quiet))
+	if (!diag_any_order(st->d, st->start))
 		return false;
 	double t0 = now_coarse();
 	check_statement(st->checker, stmt);
 	double t1 = now_coarse();
 	st->check_s += t1 - t0;
-	if (diag_said(st->d, st->quiet))
+	if (!diag_any_order(st->d, st->start))
 		return false;
 	eval_statement(st->ev, stmt, checker_slots(st->checker));
 	st->eval_s += now_coarse() - t1;
-	return !diag_said(st->d, st->quiet);
+	return diag_any_order(st->d, st->start);
 }
 
-/* Returns whether the load went through without a word; if not, out holds part of the
- * scene and d what the first statements said. */
+/* Returns whether the load went through as the phases would have; if not, out holds part
+ * of the scene and d what the first statements said. */
 static bool load_streaming(struct diag *d, const struct source *src, struct scene_desc *out, struct load_times *t)
 {
 	double t0 = now();
 	struct arena *nodes = arena_new(), *keep = arena_new();
-	struct stream st = { .d = d, .quiet = diag_mark(d) };
+	struct stream st = { .d = d, .start = diag_mark(d) };
 	st.checker = checker_new(nodes, keep, d, src, NULL);
 	st.ev = evaluator_new(d, out);
 	lang_parse_each(nodes, keep, d, src, stream_statement, &st);
-	bool quiet = !diag_said(d, st.quiet);
-	checker_free(st.checker, quiet); /* the warnings about unused names come last, as in phases */
+	/* the file's unused names are warned about at its end, as in phases */
+	checker_free(st.checker, diag_any_order(d, st.start));
+	bool same = diag_any_order(d, st.start);
 	evaluator_free(st.ev);
 	arena_free(nodes);
 	arena_free(keep);
 	t->check += st.check_s;
 	t->eval += st.eval_s;
 	t->parse += now() - t0 - st.check_s - st.eval_s;
-	return quiet;
+	return same;
 }
 
 enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out,
@@ -150,9 +153,9 @@ enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_
 	const struct source *src = diag_add_source(d, from_stdin ? "<stdin>" : path, text, len, NULL,
 	                                           (struct span){ 0, 0 });
 	t.parse = now() - t0;
-	/* Most scenes say nothing and load one statement at a time. One that has something
-	 * to say is loaded again in phases, from the start, so that what it says is exactly
-	 * what the phases say; the statements before the first message are read twice. */
+	/* Most scenes have no error and load one statement at a time. One that has is loaded
+	 * again in phases, from the start, so that what it says is exactly what the phases
+	 * say; the statements before the first error are read twice. */
 	struct diag_mark start = diag_mark(d);
 	if (!load_streaming(d, src, out, &t)) {
 		diag_rewind(d, start);

@@ -77,3 +77,6 @@ EXTRA_DIST += tests/parse/inc/ring_item.scn tests/parse/inc/marker.scn tests/par
 EXTRA_DIST += tests/parse/inc/tri.obj tests/parse/tetra.obj tests/parse/sky.png
 TESTS += tests/parse/lexing.scn
 EXTRA_DIST += tests/parse/lexing.scn tests/parse/lexing.dump tests/parse/lexing.err
+# warnings (no error) in a scene loaded one statement at a time read as in phases
+TESTS += tests/parse/warnings_streamed.scn
+EXTRA_DIST += tests/parse/warnings_streamed.scn tests/parse/warnings_streamed.dump tests/parse/warnings_streamed.err
