@@ -433,6 +433,7 @@ static bool lower_sky(struct lowering *lw)
 		sky->width = img->width;
 		sky->height = img->height;
 		sky->texels = img->rgb;
+		sky->file = img->source;
 		img->rgb = NULL;
 		image_free(img);
 		sky->rot_sin = sin(k->rotate * (M_PI / 180));

@@ -338,6 +338,9 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 	if ((rc = image_alloc_for_read(w, h, fd, (double)w * h * file_bytes_per_pixel(chans),
 	                               max_ratio(compression), path, out, err, errlen)) != 0)
 		goto done;
+	(*out)->source = (struct image_source){ .format = IMAGE_EXR };
+	for (int i = 0; i < chans->num_channels; i++)
+		(*out)->source.exr_not_half |= chans->entries[i].pixel_type != EXR_PIXEL_HALF;
 	float *rgb = (*out)->rgb;
 
 	if (storage == EXR_STORAGE_SCANLINE) {

@@ -7,10 +7,22 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* ORDER IMAGE_FORMAT: image.c's format_ext follows this order. */
+enum image_format { IMAGE_PNG, IMAGE_EXR, IMAGE_PPM };
+
+/* How image_read found a file encoded, for whoever must have another program decode it
+ * the same way (scn pov); zero in an image made here. */
+struct image_source {
+	enum image_format format;
+	double png_gamma;              /* PNG: the power law of its gAMA chunk; 0: the sRGB curve */
+	bool exr_not_half;             /* OpenEXR: a channel stored as 32-bit float or integer */
+};
+
 /* Linear RGB, row 0 at the top, pixel (x, y) at rgb[3 * (y * width + x)]. */
 struct image {
 	int width, height;
 	float *rgb;                    /* width * height * 3 */
+	struct image_source source;
 };
 
 /* The most pixels one image may have (12 bytes each: 3 GiB). Bigger requests, from a
@@ -23,9 +35,6 @@ struct image *image_new(int width, int height);
 void image_free(struct image *img);
 /* What image_new allocates for width x height pixels. */
 uint64_t image_bytes(int64_t width, int64_t height);
-
-/* ORDER IMAGE_FORMAT: image.c's format_ext follows this order. */
-enum image_format { IMAGE_PNG, IMAGE_EXR, IMAGE_PPM };
 
 /* The format named by path's extension (.png, .exr, .ppm in any case), or -1. */
 int image_format_of(const char *path);

@@ -248,6 +248,7 @@ int image_png_read(int fd, const char *path, struct image **out, char *err, size
 		io_free(io);
 		return rc;
 	}
+	(*out)->source = (struct image_source){ .format = IMAGE_PNG, .png_gamma = gamma };
 	io->table = image_decode_table(depth == 16 ? 65535 : 255, gamma);
 	/* An interlaced image is only complete after the last pass, and libpng merges
 	 * each pass into the rows of the previous ones: it needs all rows in memory.

@@ -11,8 +11,6 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <math.h>
-#include <png.h>
-#include <setjmp.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -41,8 +39,6 @@ struct pov {
 	char *notes;                   /* comment lines for the header, each ending in '\n' */
 	size_t notes_len;
 	unsigned char *how;            /* per first triangle of a run: enum write_as */
-	int sky_kind;                  /* SKY_LATLONG: enum sky_file */
-	double sky_gamma;              /* a PNG's file gamma, 0 for sRGB */
 };
 
 static void note(struct pov *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -757,130 +753,6 @@ static char *image_reference(const char *image, const char *pov_dir)
 	return rel;
 }
 
-enum sky_file { SKY_FILE_PNG, SKY_FILE_EXR, SKY_FILE_PPM };
-
-struct png_probe {
-	jmp_buf jmp;
-	FILE *fp;
-};
-
-static void probe_error(png_structp png, png_const_charp msg)
-{
-	(void)msg;
-	longjmp(((struct png_probe *)png_get_error_ptr(png))->jmp, 1);
-}
-
-static void probe_warning(png_structp png, png_const_charp msg)
-{
-	(void)png;
-	(void)msg;
-}
-
-/* A PNG's transfer curve as scn's reader (png.c) decides it, by libpng's own view of
- * the chunks: an sRGB chunk is the sRGB curve (0), else a gAMA chunk is the power law
- * of its value, else sRGB. Returns 0 or errno. */
-static int png_file_gamma(FILE *fp, double *gamma)
-{
-	struct png_probe pr = { .fp = fp };
-	png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &pr, probe_error, probe_warning);
-	png_infop info = png ? png_create_info_struct(png) : NULL;
-	if (!info) {
-		png_destroy_read_struct(&png, NULL, NULL);
-		return ENOMEM;
-	}
-	if (setjmp(pr.jmp)) {
-		png_destroy_read_struct(&png, &info, NULL);
-		return EINVAL;
-	}
-	png_init_io(png, fp);
-	png_set_user_limits(png, 0x7fffffff, 0x7fffffff);
-	png_read_info(png, info);
-	*gamma = 0;
-	png_fixed_point file_gamma;
-	if (!png_get_valid(png, info, PNG_INFO_sRGB) && png_get_valid(png, info, PNG_INFO_gAMA) &&
-	    png_get_gAMA_fixed(png, info, &file_gamma) && file_gamma > 0)
-		*gamma = file_gamma / 100000.0;
-	png_destroy_read_struct(&png, &info, NULL);
-	return 0;
-}
-
-/* Whether an OpenEXR file (its header in buf) stores a channel as 32-bit float or
- * integer: POV-Ray reads every EXR through half-float RGBA. */
-static bool exr_not_half(const unsigned char *buf, size_t n)
-{
-	size_t i = 8;                  /* after the magic number and the version */
-	while (i < n && buf[i]) {
-		const char *name = (const char *)buf + i;
-		size_t nl = strnlen(name, n - i);
-		const char *type = name + nl + 1;
-		if (i + nl + 1 >= n)
-			return false;
-		size_t tl = strnlen(type, n - (i + nl + 1));
-		size_t at = i + nl + 1 + tl + 1;
-		if (at + 4 > n)
-			return false;
-		uint32_t size = buf[at] | buf[at + 1] << 8 | buf[at + 2] << 16 | (uint32_t)buf[at + 3] << 24;
-		at += 4;
-		if (strcmp(name, "channels") == 0 && strcmp(type, "chlist") == 0) {
-			size_t end = at + size < n ? at + size : n;
-			size_t c = at;
-			while (c < end && buf[c]) {
-				c += strnlen((const char *)buf + c, end - c) + 1;
-				if (c + 16 > end)
-					return false;
-				if (buf[c] != 1)   /* pixel type: 0 uint, 1 half, 2 float */
-					return true;
-				c += 16;
-			}
-			return false;
-		}
-		if (size > n - at)
-			return false;
-		i = at + size;
-	}
-	return false;
-}
-
-/* The sky image's format (from its first bytes, as scn's reader tells them) and, for a
- * PNG, its transfer curve. */
-static int sky_file_kind(const char *path, enum sky_file *kind, double *gamma, bool *not_half, char *err,
-                         size_t errlen)
-{
-	FILE *fp = fopen(path, "rb");
-	if (!fp) {
-		int e = errno;
-		snprintf(err, errlen, "cannot read the skybox image '%s': %s", path, strerror(e));
-		return e;
-	}
-	unsigned char magic[8] = { 0 };
-	size_t n = fread(magic, 1, sizeof magic, fp);
-	static const unsigned char png_magic[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
-	static const unsigned char exr_magic[4] = { 0x76, 0x2f, 0x31, 0x01 };
-	int rc = 0;
-	*gamma = 0;
-	*not_half = false;
-	if (n >= 8 && memcmp(magic, png_magic, 8) == 0) {
-		*kind = SKY_FILE_PNG;
-		rewind(fp);
-		rc = png_file_gamma(fp, gamma);
-	} else if (n >= 4 && memcmp(magic, exr_magic, 4) == 0) {
-		*kind = SKY_FILE_EXR;
-		unsigned char header[65536];
-		rewind(fp);
-		size_t hn = fread(header, 1, sizeof header, fp);
-		*not_half = exr_not_half(header, hn);
-	} else if (n >= 2 && magic[0] == 'P' && magic[1] == '6') {
-		*kind = SKY_FILE_PPM;
-	} else {
-		rc = EINVAL;
-	}
-	fclose(fp);
-	if (rc)
-		snprintf(err, errlen, "cannot read the skybox image '%s' again: %s", path,
-		         rc == EINVAL ? "not a PNG, OpenEXR or binary PPM image" : strerror(rc));
-	return rc;
-}
-
 static void write_sky(struct pov *p)
 {
 	const struct sky *sky = &p->sc->sky;
@@ -896,17 +768,17 @@ static void write_sky(struct pov *p)
 		vec(f, sky->color);
 		fputs("] } } }\n", f);
 	} else if (sky->kind == SKY_LATLONG) {
-		enum sky_file kind = (enum sky_file)p->sky_kind;
-		double gamma = p->sky_gamma;
+		enum image_format kind = sky->file.format;
+		double gamma = sky->file.png_gamma;
 		char *ref = image_reference(p->opt->sky_image, p->opt->pov_dir);
 		fputs("sky_sphere { pigment { image_map { ", f);
-		fputs(kind == SKY_FILE_PNG ? "png " : kind == SKY_FILE_EXR ? "exr " : "ppm ", f);
+		fputs(kind == IMAGE_PNG ? "png " : kind == IMAGE_EXR ? "exr " : "ppm ", f);
 		str(f, ref);
 		free(ref);
 		/* decode as scn does: EXR is linear; PPM is sRGB; a PNG by its chunks */
-		if (kind == SKY_FILE_PPM || (kind == SKY_FILE_PNG && gamma == 0))
+		if (kind == IMAGE_PPM || (kind == IMAGE_PNG && gamma == 0))
 			fputs(" gamma srgb", f);
-		else if (kind == SKY_FILE_PNG) {
+		else if (kind == IMAGE_PNG) {
 			fputs(" gamma ", f);
 			num(f, 1 / gamma);
 		}
@@ -1084,13 +956,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 			snprintf(err, errlen, "the skybox image's file name is not known");
 			return EINVAL;
 		}
-		enum sky_file kind;
-		bool not_half;
-		int e = sky_file_kind(p.opt->sky_image, &kind, &p.sky_gamma, &not_half, err, errlen);
-		if (e)
-			return e;
-		p.sky_kind = (int)kind;
-		if (not_half)
+		if (sc->sky.file.exr_not_half)
 			note(&p, "// The skybox image has 32-bit float channels: POV-Ray reads OpenEXR as half floats, so"
 			         " its sky differs by up to about 2.4e-4 of each value (half-float images agree exactly)");
 	}

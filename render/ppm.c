@@ -152,6 +152,7 @@ int image_ppm_read(int fd, const char *path, bool linear, struct image **out, ch
 	if ((rc = image_alloc_for_read(w, h, fd, (double)w * h * 3 * (maxval > 255 ? 2 : 1), 1, path, out,
 	                               err, errlen)) != 0)
 		goto done;
+	(*out)->source = (struct image_source){ .format = IMAGE_PPM };
 
 	size_t bps = maxval > 255 ? 2 : 1;
 	size_t rowlen = (size_t)w * 3 * bps;

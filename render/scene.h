@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "image.h"
 #include "vec.h"
 
 struct camera {
@@ -77,6 +78,7 @@ struct sky {
 	struct vec3 horizon;
 	int width, height;             /* SKY_LATLONG: the equirectangular map, linear RGB */
 	float *texels;                 /* width * height * 3, top row first */
+	struct image_source file;      /* SKY_LATLONG: how its file was encoded */
 	double rot_sin, rot_cos;       /* rotation about y */
 	double intensity;
 };
