@@ -55,7 +55,7 @@ static double now(void)
 /* For the three readings around each of a million statements: the exact clock would take
  * several percent of the load. The coarse one moves in ticks (4 ms), but a statement
  * starts at no particular point of a tick, so the sum of many short readings is as likely
- * to be over as under: right on average, and exact to a tick for a long statement. */
+ * to be over as under: right on average, and right to a tick for a long statement. */
 static double now_coarse(void)
 {
 #ifdef CLOCK_MONOTONIC_COARSE
@@ -94,22 +94,30 @@ struct stream {
 	struct diag_mark start;        /* what the diagnostics were when it started */
 	struct checker *checker;
 	struct evaluator *ev;
-	double check_s, eval_s;
+	double last;                   /* the coarse clock's last reading */
+	double parse_s, check_s, eval_s; /* by the coarse clock: how the time divides */
 };
+
+/* Adds the coarse time since the last reading to *phase. */
+static void lap(struct stream *st, double *phase)
+{
+	double t = now_coarse();
+	*phase += t - st->last;
+	st->last = t;
+}
 
 static bool stream_statement(void *arg, struct ast *stmt)
 {
 	struct stream *st = arg;
 	if (!diag_any_order(st->d, st->start))
 		return false;
-	double t0 = now_coarse();
+	lap(st, &st->parse_s);
 	check_statement(st->checker, stmt);
-	double t1 = now_coarse();
-	st->check_s += t1 - t0;
+	lap(st, &st->check_s);
 	if (!diag_any_order(st->d, st->start))
 		return false;
 	eval_statement(st->ev, stmt, checker_slots(st->checker));
-	st->eval_s += now_coarse() - t1;
+	lap(st, &st->eval_s);
 	return diag_any_order(st->d, st->start);
 }
 
@@ -119,7 +127,7 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 {
 	double t0 = now();
 	struct arena *nodes = arena_new(), *keep = arena_new();
-	struct stream st = { .d = d, .start = diag_mark(d) };
+	struct stream st = { .d = d, .start = diag_mark(d), .last = now_coarse() };
 	st.checker = checker_new(nodes, keep, d, src, NULL);
 	st.ev = evaluator_new(d, out);
 	lang_parse_each(nodes, keep, d, src, stream_statement, &st);
@@ -129,9 +137,13 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 	evaluator_free(st.ev);
 	arena_free(nodes);
 	arena_free(keep);
-	t->check += st.check_s;
-	t->eval += st.eval_s;
-	t->parse += now() - t0 - st.check_s - st.eval_s;
+	/* the exact clock says how much time there was, the coarse one how it divides (all
+	 * parse when no tick passed) */
+	lap(&st, &st.parse_s);
+	double total = now() - t0, ticked = st.parse_s + st.check_s + st.eval_s;
+	t->parse += ticked > 0 ? total * st.parse_s / ticked : total;
+	t->check += ticked > 0 ? total * st.check_s / ticked : 0;
+	t->eval += ticked > 0 ? total * st.eval_s / ticked : 0;
 	return same;
 }
 
