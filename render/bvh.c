@@ -400,12 +400,12 @@ static void join_tasks(struct builder *b, struct bvh *bvh, struct node_vec *top)
 	}
 }
 
-/* The area of a child's box, for choosing which child to open; infinite boxes (a
- * scene beyond float range) count as the largest. */
+/* The area of a child's box (vbox_area's), for choosing which child to open; a NaN from
+ * an infinite box (a scene beyond float range) counts as the largest. */
 static float child_area(const struct child *ch)
 {
-	float e[3] = { ch->box[3] - ch->box[0], ch->box[4] - ch->box[1], ch->box[5] - ch->box[2] };
-	float a = e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+	float lo[4] = { ch->box[0], ch->box[1], ch->box[2], 0 }, hi[4] = { ch->box[3], ch->box[4], ch->box[5], 0 };
+	float a = vbox_area((struct vbox){ v4load(lo), v4load(hi) });
 	return a == a ? a : INFINITY;
 }
 
