@@ -16,5 +16,6 @@ render_libscnrender_a_SOURCES += render/mesh_import.c render/mesh_import.h \
 render_libscnrender_a_SOURCES += %D%/image.c %D%/image.h %D%/png.c %D%/exr.c %D%/ppm.c
 render_libscnrender_a_SOURCES += render/sampler.c render/sampler.h
 render_libscnrender_a_SOURCES += render/imgdiff.c render/imgdiff.h
-render_libscnrender_a_SOURCES += %D%/pov_export.c %D%/pov_export.h
+render_libscnrender_a_SOURCES += %D%/pov_export.c %D%/pov_export.h %D%/pov_material.c %D%/pov_material.h \
+	%D%/pov_write.c %D%/pov_write.h
 render_libscnrender_a_SOURCES += %D%/atomic.c %D%/atomic.h

@@ -1,7 +1,7 @@
 /* pov_export.c: writes a lowered scene as the POV-Ray 3.7 scene that computes the same
  * image (povray-equivalence.md): the header that turns POV-Ray's extras off, the camera,
- * the sky, the lights, every material by the single-layer recipe where that is exact and
- * by the layered general recipe otherwise, and the world-space geometry (meshes as mesh2
+ * the sky, the lights, every material (pov_material.c: the single-layer recipe where exact,
+ * the layered general recipe otherwise), and the world-space geometry (meshes as mesh2
  * in single precision, as POV-Ray stores them). The first lines are comments with the
  * povray command line that renders it and whatever POV-Ray cannot reproduce exactly. */
 #include "pov_export.h"
@@ -19,11 +19,10 @@
 #include <unistd.h>
 
 #include "atomic.h"
+#include "pov_material.h"
+#include "pov_write.h"
 #include "xalloc.h"
 
-/* A colour channel this small stands in for zero where a layer must not filter to
- * exactly 0 (povray-equivalence.md section 7): POV-Ray skips the layers below one. */
-#define TINY 1e-7
 /* How far up-wind a distant light is put, at least, and in scene radii. */
 #define FAR_MIN 1e6
 #define FAR_RADII 100
@@ -61,277 +60,6 @@ static void note(struct pov *p, const char *fmt, ...)
 	p->notes_len += (size_t)n;
 }
 
-/* --- numbers --- */
-
-/* The shortest decimal that reads back as v exactly. */
-static void num(FILE *f, double v)
-{
-	char buf[40];
-	if (v == 0) {                  /* also -0 */
-		fputs("0", f);
-		return;
-	}
-	for (int prec = 15; prec <= 17; prec++) {
-		snprintf(buf, sizeof buf, "%.*g", prec, v);
-		if (strtod(buf, NULL) == v)
-			break;
-	}
-	fputs(buf, f);
-}
-
-/* "x, y, z", the inside of a vector */
-static void components(FILE *f, struct vec3 v)
-{
-	num(f, v.x);
-	fputs(", ", f);
-	num(f, v.y);
-	fputs(", ", f);
-	num(f, v.z);
-}
-
-static void vec(FILE *f, struct vec3 v)
-{
-	fputc('<', f);
-	components(f, v);
-	fputc('>', f);
-}
-
-/* A vector in single precision, as mesh2 stores it: %.9g reads back as the same float.
- * A component beyond float's range is written as the double it is (never "inf", which
- * POV-Ray cannot parse): what POV-Ray makes of it is then its own doing. */
-static void fvec(FILE *f, struct vec3 v)
-{
-	double c[3] = { v.x, v.y, v.z };
-	for (int k = 0; k < 3; k++) {
-		float single = (float)c[k];
-		fprintf(f, isfinite(single) ? "%s%.9g" : "%s%.17g", k ? "," : "<", isfinite(single) ? (double)single : c[k]);
-	}
-	fputc('>', f);
-}
-
-/* A colour with a fourth channel (filter or transmit). */
-static void vec4(FILE *f, struct vec3 v, double w)
-{
-	fputc('<', f);
-	components(f, v);
-	fputs(", ", f);
-	num(f, w);
-	fputc('>', f);
-}
-
-/* A string literal: POV-Ray reads backslash escapes in strings. */
-static void str(FILE *f, const char *s)
-{
-	fputc('"', f);
-	for (; *s; s++) {
-		if (*s == '"' || *s == '\\')
-			fputc('\\', f);
-		fputc(*s, f);
-	}
-	fputc('"', f);
-}
-
-/* A comment's text: one line, whatever the name holds. */
-static void comment_text(FILE *f, const char *s)
-{
-	for (; *s; s++)
-		fputc(*s == '\n' || *s == '\r' ? ' ' : *s, f);
-}
-
-static bool grey(struct vec3 v)
-{
-	return v.x == v.y && v.y == v.z;
-}
-
-static struct vec3 vdiv(struct vec3 a, double b)
-{
-	return v3(a.x / b, a.y / b, a.z / b);
-}
-
-/* a / b per channel, 0 where b is 0 (the channel contributes nothing there) */
-static struct vec3 safe_div(struct vec3 a, struct vec3 b)
-{
-	return v3(b.x != 0 ? a.x / b.x : 0, b.y != 0 ? a.y / b.y : 0, b.z != 0 ? a.z / b.z : 0);
-}
-
-/* --- materials (povray-equivalence.md section 7) --- */
-
-static double pov_ior(double ior)
-{
-	/* ior exactly 1 would continue the ray without counting a trace level (section 6) */
-	return ior == 1 ? 1.0000001 : ior;
-}
-
-/* The single-layer recipe is exact when k_s and k_t are grey, 0 <= t < 1 (or t >= 1
- * and no diffuse), and emit is zero or follows a plain diffuse that is non-zero in
- * every channel where emit is. */
-static bool single_layer(const struct material *m)
-{
-	if (!grey(m->specular) || !grey(m->transmit))
-		return false;
-	double t = m->transmit.x;
-	bool no_diffuse = vzero(m->diffuse) && (!m->checker || vzero(m->diffuse2));
-	if (t < 0 || (t >= 1 && !no_diffuse))
-		return false;
-	if (vzero(m->emit))
-		return true;
-	if (m->checker || t >= 1)
-		return false;
-	return (m->emit.x == 0 || m->diffuse.x != 0) && (m->emit.y == 0 || m->diffuse.y != 0) &&
-	       (m->emit.z == 0 || m->diffuse.z != 0);
-}
-
-/* A pigment of diffuse colours divided by div, with transmit t: plain or checker. */
-static void diffuse_pigment(FILE *f, const struct material *m, double div, double t)
-{
-	fputs("pigment { ", f);
-	if (m->checker) {
-		fputs("checker rgbt ", f);
-		vec4(f, vdiv(m->diffuse, div), t);
-		fputs(", rgbt ", f);
-		vec4(f, vdiv(m->diffuse2, div), t);
-		fputs(" scale ", f);
-		num(f, m->checker_size);
-	} else {
-		fputs("rgbt ", f);
-		vec4(f, vdiv(m->diffuse, div), t);
-	}
-	fputs(" }", f);
-}
-
-static void roughness(FILE *f, double shininess)
-{
-	/* POV-Ray's exponent is 1/roughness; roughness 0 is its exponent 0 */
-	fputs(" roughness ", f);
-	num(f, shininess > 0 ? 1 / shininess : 0);
-}
-
-static void fresnel_reflection(FILE *f, const struct material *m)
-{
-	fputs(" reflection { rgb 0, rgb ", f);
-	vec(f, m->reflect);
-	fputs(" fresnel on } conserve_energy", f);
-}
-
-static void write_single_layer(FILE *f, const struct material *m)
-{
-	double t = m->transmit.x;
-	double s = m->specular.x;
-	fputs("  texture {\n    ", f);
-	if (t >= 1) {                  /* no diffuse: nothing to divide by 1 - t */
-		fputs("pigment { rgbt ", f);
-		vec4(f, v3s(0), t);
-		fputs(" }", f);
-	} else
-		diffuse_pigment(f, m, 1 - t, t);
-	fputs("\n    finish { ambient 0", f);
-	if (!vzero(m->emit)) {
-		fputs(" emission rgb ", f);
-		vec(f, safe_div(m->emit, m->diffuse));
-	}
-	fputs(" diffuse 1 brilliance 1 specular ", f);
-	num(f, s);
-	if (s != 0)
-		roughness(f, m->shininess);
-	fputs(" phong 0", f);
-	if (m->fresnel)
-		fresnel_reflection(f, m);
-	else if (!vzero(m->reflect)) {
-		fputs(" reflection { rgb ", f);
-		vec(f, m->reflect);
-		fputs(" }", f);
-	}
-	fputs(" }\n  }\n", f);
-}
-
-/* The general recipe: four layers, bottom first: S (highlight, transmission, Fresnel
- * reflection), F (filters S by k_s), D (diffuse and plain reflection), E (emission). */
-static void write_layers(FILE *f, const struct material *m)
-{
-	bool has_emit = !vzero(m->emit);
-	bool has_fs = !vzero(m->specular) || !vzero(m->transmit) || m->fresnel;
-	double tE = has_emit ? 0.5 : 1, tD = has_fs ? 0.5 : 0;
-	if (has_fs) {
-		/* k_s' = max(k_s, TINY) where k_t is not 0, everywhere with Fresnel */
-		struct vec3 ks = m->specular, kt = m->transmit;
-		if ((kt.x != 0 || m->fresnel) && ks.x < TINY)
-			ks.x = TINY;
-		if ((kt.y != 0 || m->fresnel) && ks.y < TINY)
-			ks.y = TINY;
-		if ((kt.z != 0 || m->fresnel) && ks.z < TINY)
-			ks.z = TINY;
-		fputs("  texture { pigment { rgbf ", f);                                   /* S */
-		vec4(f, safe_div(kt, ks), 1);
-		fputs(" }\n            finish { ambient 0 diffuse 0 specular 1", f);
-		roughness(f, m->shininess);
-		fputs(" phong 0", f);
-		if (m->fresnel)
-			fresnel_reflection(f, m);
-		fputs(" } }\n", f);
-		fputs("  texture { pigment { rgbf ", f);                                   /* F */
-		vec4(f, vdiv(ks, tE * tD), 1);
-		fputs(" }\n            finish { ambient 0 diffuse 0 specular 0 phong 0 } }\n", f);
-	}
-	fputs("  texture { ", f);                                                     /* D */
-	diffuse_pigment(f, m, (1 - tD) * tE, tD);
-	fputs("\n            finish { ambient 0 diffuse 1 brilliance 1 specular 0 phong 0", f);
-	if (!m->fresnel && !vzero(m->reflect)) {
-		fputs(" reflection { rgb ", f);
-		vec(f, m->reflect);
-		fputs(" }", f);
-	}
-	fputs(" } }\n", f);
-	if (has_emit) {
-		fputs("  texture { pigment { rgbt ", f);                                  /* E */
-		vec4(f, vdiv(m->emit, 1 - tE), tE);
-		fputs(" }\n            finish { ambient 0 emission 1 diffuse 0 specular 0 phong 0 } }\n", f);
-	}
-}
-
-static void write_material(FILE *f, size_t index, const struct material *m)
-{
-	fprintf(f, "// scn material %zu: diffuse ", index);
-	if (m->checker) {
-		fputs("checker(", f);
-		vec(f, m->diffuse);
-		fputs(", ", f);
-		vec(f, m->diffuse2);
-		fputs(", ", f);
-		num(f, m->checker_size);
-		fputs(")", f);
-	} else {
-		vec(f, m->diffuse);
-	}
-	fputs(" specular ", f);
-	vec(f, m->specular);
-	fputs(" shininess ", f);
-	num(f, m->shininess);
-	fputs(" reflect ", f);
-	vec(f, m->reflect);
-	fputs(" transmit ", f);
-	vec(f, m->transmit);
-	fputs(" ior ", f);
-	num(f, m->ior);
-	if (m->fresnel)
-		fputs(" fresnel", f);
-	fputs(" emit ", f);
-	vec(f, m->emit);
-	fputc('\n', f);
-	bool single = single_layer(m);
-	fprintf(f, "#declare scn_material_%zu = material {%s\n", index,
-	        single ? "" : "  // general recipe: layers S, F, D, E (the last is on top)");
-	if (single)
-		write_single_layer(f, m);
-	else
-		write_layers(f, m);
-	if (!vzero(m->transmit) || m->fresnel) {
-		fputs("  interior { ior ", f);
-		num(f, pov_ior(m->ior));
-		fputs(" }\n", f);
-	}
-	fputs("}\n", f);
-}
-
 /* The material of a surface; a checker in object space gets the object's transform: POV-
  * Ray applies the inverse of a transform to the point, and `inverse` makes that inverse
  * exactly scn's to_object map. */
@@ -345,7 +73,7 @@ static void material_ref(struct pov *p, uint32_t surface)
 		fputs(" transform { matrix <", f);
 		for (int col = 0; col < 4; col++)
 			for (int row = 0; row < 3; row++) {
-				num(f, m[row][col]);
+				pov_num(f, m[row][col]);
 				if (col < 3 || row < 2)
 					fputs(", ", f);
 			}
@@ -364,10 +92,10 @@ static void triangle_body(struct pov *p, size_t i)
 	FILE *f = p->f;
 	fputs(t->n[0] == NO_NORMALS ? "triangle { " : "smooth_triangle { ", f);
 	for (int k = 0; k < 3; k++) {
-		vec(f, sc->vertices[t->v[k]]);
+		pov_vec(f, sc->vertices[t->v[k]]);
 		if (t->n[0] != NO_NORMALS) {
 			fputs(", ", f);
-			vec(f, sc->normals[t->n[k]]);
+			pov_vec(f, sc->normals[t->n[k]]);
 		}
 		fputs(k < 2 ? ", " : " ", f);
 	}
@@ -435,7 +163,7 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(vmax - vmin + 1));
 	for (uint32_t v = vmin; v <= vmax; v++) {
 		fputs(v % 4 == vmin % 4 ? ",\n    " : ", ", f);
-		fvec(f, sc->vertices[v]);
+		pov_fvec(f, sc->vertices[v]);
 	}
 	fputs(" }\n", f);
 	if (smooth) {
@@ -446,12 +174,12 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 		size_t k = 0;
 		for (uint32_t n = nmin; n <= nmax; n++, k++) {
 			fputs(k % 4 == 0 ? ",\n    " : ", ", f);
-			fvec(f, sc->normals[n]);
+			pov_fvec(f, sc->normals[n]);
 		}
 		for (size_t i = first; i < last; i++)
 			if (sc->triangles[i].n[0] == NO_NORMALS) {
 				fputs(k++ % 4 == 0 ? ",\n    " : ", ", f);
-				fvec(f, vnorm(geometric_normal(sc, &sc->triangles[i])));
+				pov_fvec(f, vnorm(geometric_normal(sc, &sc->triangles[i])));
 			}
 		fputs(" }\n", f);
 	}
@@ -701,13 +429,13 @@ static void write_camera(struct pov *p)
 	FILE *f = p->f;
 	bool given = o->look_at && o->up && o->fov > 0;
 	fputs("camera { perspective location ", f);
-	vec(f, c->eye);
+	pov_vec(f, c->eye);
 	fputs(" look_at ", f);
-	vec(f, given ? v3a(o->look_at) : vadd(c->eye, c->dir));
+	pov_vec(f, given ? v3a(o->look_at) : vadd(c->eye, c->dir));
 	fputs(" sky ", f);
-	vec(f, given ? v3a(o->up) : c->up);
+	pov_vec(f, given ? v3a(o->up) : c->up);
 	fprintf(f, " right x*%d/%d up y angle ", c->width, c->height);
-	num(f, given ? o->fov : 2 * atan(c->tan_half) * (180 / M_PI));
+	pov_num(f, given ? o->fov : 2 * atan(c->tan_half) * (180 / M_PI));
 	fputs(" }\n", f);
 }
 
@@ -758,14 +486,14 @@ static void write_sky(struct pov *p)
 	const struct sky *sky = &p->sc->sky;
 	FILE *f = p->f;
 	fputs("background { rgb ", f);
-	vec(f, sky->kind == SKY_CONSTANT ? sky->color : v3s(0));
+	pov_vec(f, sky->kind == SKY_CONSTANT ? sky->color : v3s(0));
 	fputs(" }\n", f);
 	if (sky->kind == SKY_ZENITH_HORIZON) {
 		/* t = clamp(d.y, 0, 1); a plain gradient y would wrap below the horizon */
 		fputs("sky_sphere { pigment { function { min(max(y, 0), 1) } color_map { [0 rgb ", f);
-		vec(f, sky->horizon);
+		pov_vec(f, sky->horizon);
 		fputs("] [1 rgb ", f);
-		vec(f, sky->color);
+		pov_vec(f, sky->color);
 		fputs("] } } }\n", f);
 	} else if (sky->kind == SKY_LATLONG) {
 		enum image_format kind = sky->file.format;
@@ -773,24 +501,24 @@ static void write_sky(struct pov *p)
 		char *ref = image_reference(p->opt->sky_image, p->opt->pov_dir);
 		fputs("sky_sphere { pigment { image_map { ", f);
 		fputs(kind == IMAGE_PNG ? "png " : kind == IMAGE_EXR ? "exr " : "ppm ", f);
-		str(f, ref);
+		pov_str(f, ref);
 		free(ref);
 		/* decode as scn does: EXR is linear; PPM is sRGB; a PNG by its chunks */
 		if (kind == IMAGE_PPM || (kind == IMAGE_PNG && gamma == 0))
 			fputs(" gamma srgb", f);
 		else if (kind == IMAGE_PNG) {
 			fputs(" gamma ", f);
-			num(f, 1 / gamma);
+			pov_num(f, 1 / gamma);
 		}
 		fputs(" map_type 1 interpolate 2 } }", f);
 		if (sky->intensity != 1) {
 			fputs(" emission rgb ", f);
-			num(f, sky->intensity);
+			pov_num(f, sky->intensity);
 		}
 		double deg = p->opt->sky_rotate ? *p->opt->sky_rotate : atan2(sky->rot_sin, sky->rot_cos) * (180 / M_PI);
 		if (deg != 0) {
 			fputs(" rotate <0, ", f);
-			num(f, deg);
+			pov_num(f, deg);
 			fputs(", 0>", f);
 		}
 		fputs(" }\n", f);
@@ -809,16 +537,16 @@ static void write_lights(struct pov *p)
 		const struct light *l = &sc->lights[i];
 		fputs("light_source { ", f);
 		if (l->kind == LIGHT_POINT) {
-			vec(f, l->pos);
+			pov_vec(f, l->pos);
 			fputs(" color rgb ", f);
-			vec(f, l->color);
+			pov_vec(f, l->color);
 		} else {
 			/* far up-wind; shading uses exactly the direction to point_at */
-			vec(f, vadd(centre, vscale(l->to_light, far)));
+			pov_vec(f, vadd(centre, vscale(l->to_light, far)));
 			fputs(" color rgb ", f);
-			vec(f, l->color);
+			pov_vec(f, l->color);
 			fputs(" parallel point_at ", f);
-			vec(f, centre);
+			pov_vec(f, centre);
 		}
 		if (l->shadowless)
 			fputs(" shadowless", f);
@@ -873,12 +601,12 @@ static void write_header(struct pov *p)
 	}
 
 	fputs("// ", f);
-	comment_text(f, name);
+	pov_comment_text(f, name);
 	fputs(": the POV-Ray 3.7 equivalent of ", f);
-	comment_text(f, p->opt->source ? p->opt->source : "an scn scene");
+	pov_comment_text(f, p->opt->source ? p->opt->source : "an scn scene");
 	if (p->opt->generator) {
 		fputs(", written by ", f);
-		comment_text(f, p->opt->generator);
+		pov_comment_text(f, p->opt->generator);
 	}
 	fputs(".\n// Render it in this file's folder (16-bit linear PNG, povray-equivalence.md):\n// Render: povray -D ", f);
 	fprintf(f, "%s +W%ld +H%ld +FN16 File_Gamma=1.0 ", aa, (long)sc->camera.width * scale,
@@ -916,9 +644,9 @@ static void write_header(struct pov *p)
 static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 v, double x, uint32_t surface)
 {
 	fprintf(p->f, "%s { ", keyword);
-	vec(p->f, v);
+	pov_vec(p->f, v);
 	fputs(", ", p->f);
-	num(p->f, x);
+	pov_num(p->f, x);
 	fputc(' ', p->f);
 	material_ref(p, surface);
 	fputs(" }\n", p->f);
@@ -967,7 +695,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	write_sky(&p);
 	write_lights(&p);
 	for (size_t i = 0; i < sc->nmaterials; i++)
-		write_material(out, i, &sc->materials[i]);
+		pov_write_material(out, i, &sc->materials[i]);
 	write_objects(&p);
 	free(p.how);
 	free(p.notes);

@@ -1,0 +1,205 @@
+/* pov_material.c: an scn material as the POV-Ray material that shades as it does
+ * (povray-equivalence.md section 7): the single-layer recipe where that is exact, the
+ * layered general recipe otherwise, and the interior that carries the index of
+ * refraction. */
+#include "pov_material.h"
+
+#include <stdbool.h>
+
+#include "pov_write.h"
+
+/* A colour channel this small stands in for zero where a layer must not filter to
+ * exactly 0 (povray-equivalence.md section 7): POV-Ray skips the layers below one. */
+#define TINY 1e-7
+
+static bool grey(struct vec3 v)
+{
+	return v.x == v.y && v.y == v.z;
+}
+
+static struct vec3 vdiv(struct vec3 a, double b)
+{
+	return v3(a.x / b, a.y / b, a.z / b);
+}
+
+/* a / b per channel, 0 where b is 0 (the channel contributes nothing there) */
+static struct vec3 safe_div(struct vec3 a, struct vec3 b)
+{
+	return v3(b.x != 0 ? a.x / b.x : 0, b.y != 0 ? a.y / b.y : 0, b.z != 0 ? a.z / b.z : 0);
+}
+
+static double pov_ior(double ior)
+{
+	/* ior exactly 1 would continue the ray without counting a trace level (section 6) */
+	return ior == 1 ? 1.0000001 : ior;
+}
+
+/* The single-layer recipe is exact when k_s and k_t are grey, 0 <= t < 1 (or t >= 1
+ * and no diffuse), and emit is zero or follows a plain diffuse that is non-zero in
+ * every channel where emit is. */
+static bool single_layer(const struct material *m)
+{
+	if (!grey(m->specular) || !grey(m->transmit))
+		return false;
+	double t = m->transmit.x;
+	bool no_diffuse = vzero(m->diffuse) && (!m->checker || vzero(m->diffuse2));
+	if (t < 0 || (t >= 1 && !no_diffuse))
+		return false;
+	if (vzero(m->emit))
+		return true;
+	if (m->checker || t >= 1)
+		return false;
+	return (m->emit.x == 0 || m->diffuse.x != 0) && (m->emit.y == 0 || m->diffuse.y != 0) &&
+	       (m->emit.z == 0 || m->diffuse.z != 0);
+}
+
+/* A pigment of diffuse colours divided by div, with transmit t: plain or checker. */
+static void diffuse_pigment(FILE *f, const struct material *m, double div, double t)
+{
+	fputs("pigment { ", f);
+	if (m->checker) {
+		fputs("checker rgbt ", f);
+		pov_vec4(f, vdiv(m->diffuse, div), t);
+		fputs(", rgbt ", f);
+		pov_vec4(f, vdiv(m->diffuse2, div), t);
+		fputs(" scale ", f);
+		pov_num(f, m->checker_size);
+	} else {
+		fputs("rgbt ", f);
+		pov_vec4(f, vdiv(m->diffuse, div), t);
+	}
+	fputs(" }", f);
+}
+
+static void roughness(FILE *f, double shininess)
+{
+	/* POV-Ray's exponent is 1/roughness; roughness 0 is its exponent 0 */
+	fputs(" roughness ", f);
+	pov_num(f, shininess > 0 ? 1 / shininess : 0);
+}
+
+static void fresnel_reflection(FILE *f, const struct material *m)
+{
+	fputs(" reflection { rgb 0, rgb ", f);
+	pov_vec(f, m->reflect);
+	fputs(" fresnel on } conserve_energy", f);
+}
+
+static void write_single_layer(FILE *f, const struct material *m)
+{
+	double t = m->transmit.x;
+	double s = m->specular.x;
+	fputs("  texture {\n    ", f);
+	if (t >= 1) {                  /* no diffuse: nothing to divide by 1 - t */
+		fputs("pigment { rgbt ", f);
+		pov_vec4(f, v3s(0), t);
+		fputs(" }", f);
+	} else
+		diffuse_pigment(f, m, 1 - t, t);
+	fputs("\n    finish { ambient 0", f);
+	if (!vzero(m->emit)) {
+		fputs(" emission rgb ", f);
+		pov_vec(f, safe_div(m->emit, m->diffuse));
+	}
+	fputs(" diffuse 1 brilliance 1 specular ", f);
+	pov_num(f, s);
+	if (s != 0)
+		roughness(f, m->shininess);
+	fputs(" phong 0", f);
+	if (m->fresnel)
+		fresnel_reflection(f, m);
+	else if (!vzero(m->reflect)) {
+		fputs(" reflection { rgb ", f);
+		pov_vec(f, m->reflect);
+		fputs(" }", f);
+	}
+	fputs(" }\n  }\n", f);
+}
+
+/* The general recipe: four layers, bottom first: S (highlight, transmission, Fresnel
+ * reflection), F (filters S by k_s), D (diffuse and plain reflection), E (emission). */
+static void write_layers(FILE *f, const struct material *m)
+{
+	bool has_emit = !vzero(m->emit);
+	bool has_fs = !vzero(m->specular) || !vzero(m->transmit) || m->fresnel;
+	double tE = has_emit ? 0.5 : 1, tD = has_fs ? 0.5 : 0;
+	if (has_fs) {
+		/* k_s' = max(k_s, TINY) where k_t is not 0, everywhere with Fresnel */
+		struct vec3 ks = m->specular, kt = m->transmit;
+		if ((kt.x != 0 || m->fresnel) && ks.x < TINY)
+			ks.x = TINY;
+		if ((kt.y != 0 || m->fresnel) && ks.y < TINY)
+			ks.y = TINY;
+		if ((kt.z != 0 || m->fresnel) && ks.z < TINY)
+			ks.z = TINY;
+		fputs("  texture { pigment { rgbf ", f);                                   /* S */
+		pov_vec4(f, safe_div(kt, ks), 1);
+		fputs(" }\n            finish { ambient 0 diffuse 0 specular 1", f);
+		roughness(f, m->shininess);
+		fputs(" phong 0", f);
+		if (m->fresnel)
+			fresnel_reflection(f, m);
+		fputs(" } }\n", f);
+		fputs("  texture { pigment { rgbf ", f);                                   /* F */
+		pov_vec4(f, vdiv(ks, tE * tD), 1);
+		fputs(" }\n            finish { ambient 0 diffuse 0 specular 0 phong 0 } }\n", f);
+	}
+	fputs("  texture { ", f);                                                     /* D */
+	diffuse_pigment(f, m, (1 - tD) * tE, tD);
+	fputs("\n            finish { ambient 0 diffuse 1 brilliance 1 specular 0 phong 0", f);
+	if (!m->fresnel && !vzero(m->reflect)) {
+		fputs(" reflection { rgb ", f);
+		pov_vec(f, m->reflect);
+		fputs(" }", f);
+	}
+	fputs(" } }\n", f);
+	if (has_emit) {
+		fputs("  texture { pigment { rgbt ", f);                                  /* E */
+		pov_vec4(f, vdiv(m->emit, 1 - tE), tE);
+		fputs(" }\n            finish { ambient 0 emission 1 diffuse 0 specular 0 phong 0 } }\n", f);
+	}
+}
+
+void pov_write_material(FILE *f, size_t index, const struct material *m)
+{
+	fprintf(f, "// scn material %zu: diffuse ", index);
+	if (m->checker) {
+		fputs("checker(", f);
+		pov_vec(f, m->diffuse);
+		fputs(", ", f);
+		pov_vec(f, m->diffuse2);
+		fputs(", ", f);
+		pov_num(f, m->checker_size);
+		fputs(")", f);
+	} else {
+		pov_vec(f, m->diffuse);
+	}
+	fputs(" specular ", f);
+	pov_vec(f, m->specular);
+	fputs(" shininess ", f);
+	pov_num(f, m->shininess);
+	fputs(" reflect ", f);
+	pov_vec(f, m->reflect);
+	fputs(" transmit ", f);
+	pov_vec(f, m->transmit);
+	fputs(" ior ", f);
+	pov_num(f, m->ior);
+	if (m->fresnel)
+		fputs(" fresnel", f);
+	fputs(" emit ", f);
+	pov_vec(f, m->emit);
+	fputc('\n', f);
+	bool single = single_layer(m);
+	fprintf(f, "#declare scn_material_%zu = material {%s\n", index,
+	        single ? "" : "  // general recipe: layers S, F, D, E (the last is on top)");
+	if (single)
+		write_single_layer(f, m);
+	else
+		write_layers(f, m);
+	if (!vzero(m->transmit) || m->fresnel) {
+		fputs("  interior { ior ", f);
+		pov_num(f, pov_ior(m->ior));
+		fputs(" }\n", f);
+	}
+	fputs("}\n", f);
+}
