@@ -1,6 +1,7 @@
 # render/local.mk: the renderer: scene, geometry, BVH, sampling, shading, images.
 noinst_LIBRARIES += render/libscnrender.a
 render_libscnrender_a_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS) $(EXR_CFLAGS) $(ASSIMP_CFLAGS)
+render_libscnrender_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
 render_libscnrender_a_SOURCES = \
 	%D%/accel.h %D%/bvh.c %D%/bvh.h %D%/grid.c %D%/grid.h \
 	%D%/camera.c %D%/camera.h \
