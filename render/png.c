@@ -124,6 +124,9 @@ int image_png_write(const struct image *img, int fd, const char *path, int bit_d
 	png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, bit_depth,
 	             PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
 	             PNG_FILTER_TYPE_DEFAULT);
+	/* zlib level 3, not its default 6: measured on the 1280 x 1024 headline image, the
+	 * write takes 0.09 s instead of 0.18 s (7% of the whole run) for a file 7% larger */
+	png_set_compression_level(png, 3);
 	png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
 	/* no tIME or text chunks: the same image always gives the same bytes */
 	png_write_info(png, info);
