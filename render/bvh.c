@@ -511,7 +511,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	}
 	for (size_t i = 0; i < sc->ntriangles; i++, k++) {
 		const struct triangle *t = &sc->triangles[i];
-		struct vec3 p0 = sc->vertices[t->v[0]], p1 = sc->vertices[t->v[1]], p2 = sc->vertices[t->v[2]];
+		struct vec3 p0 = t->p[0], p1 = t->p[1], p2 = t->p[2];
 		struct vec3 lo = vmin(p0, vmin(p1, p2)), hi = vmax(p0, vmax(p1, p2));
 		for (int a = 0; a < 3; a++) {
 			b.refs[k].lo[a] = float_below(vget(lo, a));

@@ -63,7 +63,7 @@ static struct box prim_box(const struct scene *sc, uint32_t prim)
 		hi = vadd(s->center, v3s(s->radius));
 	} else {
 		const struct triangle *t = &sc->triangles[i];
-		struct vec3 a = sc->vertices[t->v[0]], b = sc->vertices[t->v[1]], c = sc->vertices[t->v[2]];
+		struct vec3 a = t->p[0], b = t->p[1], c = t->p[2];
 		lo = vmin(a, vmin(b, c));
 		hi = vmax(a, vmax(b, c));
 	}

@@ -84,7 +84,7 @@ static struct vec3 permute(struct vec3 v, int kx, int ky, int kz)
 	return v3(vget(v, kx), vget(v, ky), vget(v, kz));
 }
 
-bool ray_triangle(const struct scene *sc, const struct triangle *tri, const struct ray *r, struct hit *h)
+bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h)
 {
 	/* Translate to the ray origin, permute so that z is the ray's largest axis, and
 	 * shear so that the ray is the +z axis: the edge functions then depend only on 2-D
@@ -93,9 +93,9 @@ bool ray_triangle(const struct scene *sc, const struct triangle *tri, const stru
 	int kx = kz == 2 ? 0 : kz + 1;
 	int ky = kx == 2 ? 0 : kx + 1;
 	struct vec3 d = permute(r->d, kx, ky, kz);
-	struct vec3 p0 = permute(vsub(sc->vertices[tri->v[0]], r->o), kx, ky, kz);
-	struct vec3 p1 = permute(vsub(sc->vertices[tri->v[1]], r->o), kx, ky, kz);
-	struct vec3 p2 = permute(vsub(sc->vertices[tri->v[2]], r->o), kx, ky, kz);
+	struct vec3 p0 = permute(vsub(tri->p[0], r->o), kx, ky, kz);
+	struct vec3 p1 = permute(vsub(tri->p[1], r->o), kx, ky, kz);
+	struct vec3 p2 = permute(vsub(tri->p[2], r->o), kx, ky, kz);
 	double sx = -d.x / d.z, sy = -d.y / d.z, sz = 1 / d.z;
 	p0.x += sx * p0.z;
 	p0.y += sy * p0.z;
@@ -181,7 +181,7 @@ void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h
 	}
 	case PRIM_TRIANGLE: {
 		const struct triangle *tri = &sc->triangles[prim_index(h->prim)];
-		struct vec3 a = sc->vertices[tri->v[0]], b = sc->vertices[tri->v[1]], c = sc->vertices[tri->v[2]];
+		struct vec3 a = tri->p[0], b = tri->p[1], c = tri->p[2];
 		double b0 = 1 - h->b1 - h->b2;
 		struct vec3 wa = vscale(a, b0), wb = vscale(b, h->b1), wc = vscale(c, h->b2);
 		sp->p = vadd(vadd(wa, wb), wc);

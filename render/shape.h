@@ -45,7 +45,7 @@ static inline double err_gamma(int n)
 /* Each test reports a hit with 0 < t < h->t by updating h; true when it did. */
 bool ray_sphere(const struct sphere *s, const struct ray *r, struct hit *h);
 bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h);
-bool ray_triangle(const struct scene *sc, const struct triangle *tri, const struct ray *r, struct hit *h);
+bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h);
 
 /* Every t in (0, tmax) at which r crosses the sphere (0, 1 or 2 values); for the
  * shadow filter, which counts each crossing. */
@@ -56,7 +56,7 @@ static inline bool prim_intersect(const struct scene *sc, uint32_t prim, const s
 {
 	uint32_t i = prim_index(prim);
 	bool hit = prim_kind(prim) == PRIM_SPHERE ? ray_sphere(&sc->spheres[i], r, h)
-	                                          : ray_triangle(sc, &sc->triangles[i], r, h);
+	                                          : ray_triangle(&sc->triangles[i], r, h);
 	if (hit)
 		h->prim = prim;
 	return hit;
@@ -80,7 +80,7 @@ static inline struct vec3 prim_filter(const struct scene *sc, uint32_t prim, con
 			pass = vmul(pass, transmit_of(sc, sc->spheres[k].surface));
 	} else {
 		struct hit h = { .t = tmax };
-		if (ray_triangle(sc, &sc->triangles[k], r, &h))
+		if (ray_triangle(&sc->triangles[k], r, &h))
 			pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
 	}
 	return pass;
