@@ -107,26 +107,27 @@ bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h
 	double e0 = p1.x * p2.y - p1.y * p2.x;
 	double e1 = p2.x * p0.y - p2.y * p0.x;
 	double e2 = p0.x * p1.y - p0.y * p1.x;
-	if (e0 == 0 || e1 == 0 || e2 == 0) {
+	/* | rather than ||, here and below: one branch on the outcome rather than one per
+	 * comparison, which a ray that hits or misses at random mispredicts */
+	if ((e0 == 0) | (e1 == 0) | (e2 == 0)) {
 		/* exactly on an edge in double: decide it in extended precision */
 		long double X0 = p0.x, Y0 = p0.y, X1 = p1.x, Y1 = p1.y, X2 = p2.x, Y2 = p2.y;
 		e0 = (double)(X1 * Y2 - Y1 * X2);
 		e1 = (double)(X2 * Y0 - Y2 * X0);
 		e2 = (double)(X0 * Y1 - Y0 * X1);
 	}
-	if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0))
+	if (((e0 < 0) | (e1 < 0) | (e2 < 0)) & ((e0 > 0) | (e1 > 0) | (e2 > 0)))
 		return false;
 	double det = e0 + e1 + e2;
-	if (det == 0)
-		return false;
-
 	p0.z *= sz;
 	p1.z *= sz;
 	p2.z *= sz;
 	double tscaled = e0 * p0.z + e1 * p1.z + e2 * p2.z;
-	if (det < 0 && (tscaled >= 0 || tscaled < h->t * det))
-		return false;
-	if (det > 0 && (tscaled <= 0 || tscaled > h->t * det))
+	/* t = tscaled / det must lie in (0, h->t), compared without the division */
+	double limit = h->t * det;
+	bool outside = ((det < 0) & ((tscaled >= 0) | (tscaled < limit))) |
+	               ((det > 0) & ((tscaled <= 0) | (tscaled > limit)));
+	if ((det == 0) | outside)
 		return false;
 	double inv = 1 / det;
 	double t = tscaled * inv;
@@ -142,7 +143,7 @@ bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h
 	double delta_e = 2 * (err_gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
 	double max_e = vmaxc(vabs(v3(e0, e1, e2)));
 	double delta_t = 3 * (err_gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * fabs(inv);
-	if (!(t > delta_t && t < h->t))
+	if (!((t > delta_t) & (t < h->t)))
 		return false;
 	h->t = t;
 	h->b1 = e1 * inv;
