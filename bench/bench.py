@@ -249,6 +249,22 @@ def embree(work):
     sys.stdout.flush()
     subprocess.run([os.path.join(TOP, "bench", "embree_compare"), os.path.join(work, "bunny.scn"),
                     os.path.join(work, "bunny-1m.scn")], check=True)
+    print("the spheres of the scaling study (Embree: its sphere points, in float), camera rays, 1 thread: the "
+          "traversal's part of the scaling study, without shading or shadow rays:")
+    sys.stdout.flush()
+    fields = []
+    for n in (1000, 10000, 100000, 1000000):
+        fields.append(os.path.join(work, "field-%d.scn" % n))
+        scenes.field(fields[-1], n)
+    p = subprocess.run([os.path.join(TOP, "bench", "embree_compare"), "--scaling"] + fields, check=True,
+                       capture_output=True, text=True)
+    print(p.stdout, end="")
+    rate = {}
+    for line in p.stdout.splitlines()[1:]:
+        f = line.split()
+        rate[int(f[1])] = (float(f[2]), float(f[3]))
+    print("time per camera ray, 10^6 spheres over 10^3: scn %.2fx, Embree %.2fx"
+          % (rate[1000][0] / rate[1000000][0], rate[1000][1] / rate[1000000][1]))
 
 
 def converge():

@@ -1,8 +1,11 @@
 /* embree_compare.c: raw traversal speed of scn's BVH against Intel Embree 3 on the same
- * triangles and the same rays, one ray at a time (bvh_intersect against rtcIntersect1),
+ * primitives and the same rays, one ray at a time (bvh_intersect against rtcIntersect1),
  * on 1 and 2 threads: coherent camera rays (the scene's pinhole camera, one ray through
- * each pixel centre) and incoherent rays (random origins in the mesh's bounds, random
- * directions). Only triangles count: planes and spheres are left out of both.
+ * each pixel centre) and incoherent rays (random origins in the primitives' bounds,
+ * random directions). Triangles go to Embree as a triangle mesh, spheres as its sphere
+ * points (in float, where scn's are double); planes are left out of both.
+ * With --scaling, one line per scene instead: camera rays on 1 thread, for the growth
+ * of the time per ray with the scene's size.
  * bench/run builds it (make bench/embree_compare) where libembree-dev is installed; it is
  * no part of the build or of make check. */
 #include "config.h"
@@ -104,9 +107,35 @@ static double measure(const struct scene *sc, RTCScene rtc, bool embree, const s
 	return rate[REPEATS / 2];
 }
 
+static void embree_spheres(RTCDevice dev, RTCScene s, const struct scene *sc)
+{
+	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+	float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+	                                   sc->nspheres);
+	if (!v) {
+		fprintf(stderr, "embree_compare: Embree could not allocate the spheres\n");
+		exit(1);
+	}
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		v[4 * i] = (float)sc->spheres[i].center.x;
+		v[4 * i + 1] = (float)sc->spheres[i].center.y;
+		v[4 * i + 2] = (float)sc->spheres[i].center.z;
+		v[4 * i + 3] = (float)sc->spheres[i].radius;
+	}
+	rtcCommitGeometry(g);
+	rtcAttachGeometry(s, g);
+	rtcReleaseGeometry(g);
+}
+
 static RTCScene embree_scene(RTCDevice dev, const struct scene *sc)
 {
 	RTCScene s = rtcNewScene(dev);
+	if (sc->nspheres)
+		embree_spheres(dev, s, sc);
+	if (sc->ntriangles == 0) {
+		rtcCommitScene(s);
+		return s;
+	}
 	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
 	float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
 	                                   sc->nvertices);
@@ -145,6 +174,10 @@ static struct ray *make_rays(const struct scene *sc, size_t *n)
 		lo = vmin(lo, sc->vertices[i]);
 		hi = vmax(hi, sc->vertices[i]);
 	}
+	for (size_t i = 0; i < sc->nspheres; i++) {
+		lo = vmin(lo, vsub(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+		hi = vmax(hi, vadd(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+	}
 	rng_seed(12345);
 	for (size_t i = *n; i < 2 * *n; i++) {
 		rays[i].o = v3(urange(lo.x, hi.x), urange(lo.y, hi.y), urange(lo.z, hi.z));
@@ -153,7 +186,8 @@ static struct ray *make_rays(const struct scene *sc, size_t *n)
 	return rays;
 }
 
-static int compare(RTCDevice dev, const char *path)
+/* The full table of a scene, or with scaling one line: camera rays on 1 thread. */
+static int compare(RTCDevice dev, const char *path, bool scaling)
 {
 	struct diag d;
 	diag_init(&d, stderr);
@@ -163,12 +197,11 @@ static int compare(RTCDevice dev, const char *path)
 	bool ok = lang_load_scene(&d, path, &desc, NULL) == 0 && lang_lower(&d, &desc, &sc, &lt, -1) == 0;
 	diag_flush(&d);
 	diag_fini(&d);
-	if (!ok || sc.ntriangles == 0) {
-		fprintf(stderr, "embree_compare: %s: %s\n", path, ok ? "no triangles" : "cannot load it");
+	if (!ok || sc.ntriangles + sc.nspheres == 0) {
+		fprintf(stderr, "embree_compare: %s: %s\n", path, ok ? "no triangles or spheres" : "cannot load it");
 		return 1;
 	}
 	sc.nplanes = 0;
-	sc.nspheres = 0;
 	double t0 = now();
 	accel_build(&sc, ACCEL_BVH);
 	double scn_build = now() - t0;
@@ -179,18 +212,28 @@ static int compare(RTCDevice dev, const char *path)
 	struct ray *rays = make_rays(&sc, &n);
 
 	const char *base = strrchr(path, '/');
-	printf("%s: %zu triangles; build: scn %.3f s, Embree %.3f s\n", base ? base + 1 : path, sc.ntriangles,
-	       scn_build, rtc_build);
-	printf("  %-20s %7s %12s %15s %11s  %s\n", "rays", "threads", "scn Mrays/s", "Embree Mrays/s", "scn/Embree",
-	       "hits scn/Embree");
-	static const char *const kinds[2] = { "camera (coherent)", "random (incoherent)" };
-	for (int kind = 0; kind < 2; kind++)
-		for (int threads = 1; threads <= 2; threads++) {
-			size_t hs, he;
-			double s = measure(&sc, rtc, false, rays + kind * n, n, threads, &hs);
-			double e = measure(&sc, rtc, true, rays + kind * n, n, threads, &he);
-			printf("  %-20s %7d %12.2f %15.2f %10.0f%%  %zu/%zu\n", kinds[kind], threads, s, e, 100 * s / e, hs, he);
-		}
+	base = base ? base + 1 : path;
+	if (scaling) {
+		size_t hs, he;
+		double s = measure(&sc, rtc, false, rays, n, 1, &hs);
+		double e = measure(&sc, rtc, true, rays, n, 1, &he);
+		printf("  %-22s %9zu %12.2f %15.2f %10.0f%%  %zu/%zu\n", base, sc.nspheres + sc.ntriangles, s, e,
+		       100 * s / e, hs, he);
+	} else {
+		printf("%s: %zu triangles, %zu spheres; build: scn %.3f s, Embree %.3f s\n", base, sc.ntriangles,
+		       sc.nspheres, scn_build, rtc_build);
+		printf("  %-20s %7s %12s %15s %11s  %s\n", "rays", "threads", "scn Mrays/s", "Embree Mrays/s",
+		       "scn/Embree", "hits scn/Embree");
+		static const char *const kinds[2] = { "camera (coherent)", "random (incoherent)" };
+		for (int kind = 0; kind < 2; kind++)
+			for (int threads = 1; threads <= 2; threads++) {
+				size_t hs, he;
+				double s = measure(&sc, rtc, false, rays + kind * n, n, threads, &hs);
+				double e = measure(&sc, rtc, true, rays + kind * n, n, threads, &he);
+				printf("  %-20s %7d %12.2f %15.2f %10.0f%%  %zu/%zu\n", kinds[kind], threads, s, e, 100 * s / e,
+				       hs, he);
+			}
+	}
 	fflush(stdout);
 	free(rays);
 	rtcReleaseScene(rtc);
@@ -201,8 +244,9 @@ static int compare(RTCDevice dev, const char *path)
 
 int main(int argc, char **argv)
 {
-	if (argc < 2) {
-		fprintf(stderr, "usage: embree_compare SCENE...\n");
+	bool scaling = argc > 1 && strcmp(argv[1], "--scaling") == 0;
+	if (argc < 2 + scaling) {
+		fprintf(stderr, "usage: embree_compare [--scaling] SCENE...\n");
 		return 2;
 	}
 	RTCDevice dev = rtcNewDevice(NULL);
@@ -210,9 +254,12 @@ int main(int argc, char **argv)
 		fprintf(stderr, "embree_compare: rtcNewDevice failed\n");
 		return 1;
 	}
+	if (scaling)
+		printf("  %-22s %9s %12s %15s %11s  %s\n", "scene", "prims", "scn Mrays/s", "Embree Mrays/s",
+		       "scn/Embree", "hits scn/Embree");
 	int rc = 0;
-	for (int i = 1; i < argc; i++)
-		rc |= compare(dev, argv[i]);
+	for (int i = 1 + scaling; i < argc; i++)
+		rc |= compare(dev, argv[i], scaling);
 	rtcReleaseDevice(dev);
 	return rc;
 }
