@@ -72,7 +72,7 @@ static inline int v4le(v4f a, v4f b)
  * Eight children measured faster than four on every benchmark scene, with AVX or
  * without (each step of a walk waits on the one before, and a wider node takes fewer
  * steps). 256 bytes, four cache lines. */
-enum { WIDTH = 8 };
+enum { WIDTH = BVH_WIDTH };
 struct bvh_node {
 	float box[6][WIDTH];
 	uint32_t index[WIDTH]; /* child c: a node, or for a leaf the first entry of prims */
@@ -579,10 +579,9 @@ void bvh_free(struct bvh *b)
 	free(b);
 }
 
-void bvh_shape(const struct bvh *b, size_t *nodes, int *depth)
+struct bvh_shape bvh_shape(const struct bvh *b)
 {
-	*nodes = b->nprims ? b->nboxes : 0;
-	*depth = b->depth;
+	return (struct bvh_shape){ b->nprims ? b->nboxes : 0, b->nnodes, b->depth };
 }
 
 /* What the slab test needs of a ray, worked out once per axis: the box coordinate it

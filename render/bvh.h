@@ -9,6 +9,9 @@
 
 enum accel { ACCEL_BVH, ACCEL_GRID, ACCEL_NONE }; /* ACCEL_GRID: see accel.h and grid.h */
 
+/* Children per node of the traversal's tree. */
+enum { BVH_WIDTH = 8 };
+
 /* Builds over sc's spheres and triangles, on every core; the tree is the same whatever
  * their number. ACCEL_NONE makes one leaf of everything: brute force through the same
  * code, for tests and the scaling study. */
@@ -31,7 +34,12 @@ bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray
  * surface crossed (POV-Ray's filtered shadow). Stops early once it is black. */
 struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax);
 
-/* Node count and depth, for --stats. */
-void bvh_shape(const struct bvh *b, size_t *nodes, int *depth);
+/* The tree's shape, for --stats and the tests: every node (the wide interior ones and
+ * the leaves), the interior ones alone, and the depth. */
+struct bvh_shape {
+	size_t nodes, interior;
+	int depth;
+};
+struct bvh_shape bvh_shape(const struct bvh *b);
 
 #endif

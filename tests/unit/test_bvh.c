@@ -469,6 +469,17 @@ static double lattice_coord(double size, double offset)
 	return offset + (irand(25) - 12) * size / 8;
 }
 
+/* bvh_shape's node count and depth, after checking the bound bvh_bytes relies on: over L
+ * leaves there are at most L W / (2 (W - 1)) interior nodes of width W. */
+static void shape_of(const struct bvh *b, size_t *nodes, int *depth)
+{
+	struct bvh_shape s = bvh_shape(b);
+	size_t leaves = s.nodes - s.interior, w = BVH_WIDTH;
+	CHECK(s.interior * 2 * (w - 1) <= leaves * w + 2 * (w - 1) - 1);
+	*nodes = s.nodes;
+	*depth = s.depth;
+}
+
 /* Compares nrays random rays; at least min_hits of them (a fraction) must hit something,
  * or the comparison proves little. */
 static void compare_scene(const struct scene *sc, long nrays, double min_hits, bool lattice, double size,
@@ -478,11 +489,11 @@ static void compare_scene(const struct scene *sc, long nrays, double min_hits, b
 	accels_build(sc, &a);
 	size_t nodes;
 	int depth;
-	bvh_shape(a.bvh, &nodes, &depth);
+	shape_of(a.bvh, &nodes, &depth);
 	size_t n = nprims(sc);
 	CHECK(depth <= 96);
 	CHECK(n == 0 || nodes <= 2 * n - 1);
-	bvh_shape(a.none, &nodes, &depth);
+	shape_of(a.none, &nodes, &depth);
 	CHECK(depth == 0 && nodes == (n > 0));
 	int cells[3];
 	size_t refs;
@@ -623,7 +634,7 @@ static void test_same_centroid(void)
 	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
 	size_t nodes;
 	int depth;
-	bvh_shape(bvh, &nodes, &depth);
+	shape_of(bvh, &nodes, &depth);
 	if (depth != 0)
 		fprintf(stderr, "same centroid: %zu nodes, depth %d\n", nodes, depth);
 	CHECK(depth <= 1);
@@ -636,7 +647,7 @@ static void test_same_centroid(void)
 	for (int i = 0; i < 200; i++)
 		add_triangle(&b, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0));
 	bvh = bvh_build(&b.sc, ACCEL_BVH);
-	bvh_shape(bvh, &nodes, &depth);
+	shape_of(bvh, &nodes, &depth);
 	CHECK(depth == 0 && nodes == 1);
 	bvh_free(bvh);
 	compare_scene(&b.sc, 2000, 0.02, false, 1, v3s(0), "identical triangles");
@@ -707,7 +718,7 @@ static void test_deep(void)
 	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
 	size_t nodes;
 	int depth;
-	bvh_shape(bvh, &nodes, &depth);
+	shape_of(bvh, &nodes, &depth);
 	CHECK(depth <= 96);
 	CHECK(nodes <= 2 * nprims(&b.sc) - 1);
 	/* rays along the row visit the deepest leaves */
@@ -732,7 +743,7 @@ static void test_deep(void)
 	/* a random scene's tree is shallow */
 	random_scene(&b, 20000, 10, v3s(0), false, 0);
 	bvh = bvh_build(&b.sc, ACCEL_BVH);
-	bvh_shape(bvh, &nodes, &depth);
+	shape_of(bvh, &nodes, &depth);
 	if (depth > 48)
 		fprintf(stderr, "20000 random primitives: depth %d\n", depth);
 	CHECK(depth <= 48);
