@@ -2,8 +2,10 @@
  * (with "did you mean" when it does not), every expression has a type, every attribute
  * belongs to its block and has the right shape, camera-like statements appear once and
  * outside loops, includes are read, parsed and checked in place. The checks are static so
- * that a mistake in a loop body is found whether or not the loop runs. */
-#include "check.h"
+ * that a mistake in a loop body is found whether or not the loop runs. This file holds
+ * the expressions, the statements, includes and the entry points; check_names.c the
+ * symbol table, check_block.c the blocks' attributes. */
+#include "check_internal.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -18,154 +20,9 @@
 #include "suggest.h"
 #include "xalloc.h"
 
-/* ---- the symbol table: one chain of bindings per name, innermost first ---- */
-
-struct name_entry {
-	const char *name;
-	struct binding *top;
-	struct name_entry *next;
-};
-
-struct checker {
-	struct arena *arena;       /* bindings and the symbol table: kept for the whole load */
-	struct arena *nodes;       /* the syntax trees of included files */
-	struct diag *diag;
-	struct name_entry **buckets;
-	size_t nbuckets, nentries;
-	unsigned scope;            /* depth of the current scope; the file scope is 1 */
-	struct binding *scope_bindings[2 * LANG_MAX_NESTING + 2]; /* a loop opens two */
-	unsigned nslots;
-	unsigned loop_depth;
-	int include_depth;
-	unsigned nincludes;        /* files read by includes so far, against LANG_MAX_INCLUDES */
-	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
-	/* camera, skybox, samples, max_depth seen so far, by place: the statement itself
-	 * may be gone when the file is checked one statement at a time */
-	struct { bool seen; struct span at; } once[KW_COUNT_ALL];
-	struct ast_list *root;     /* the scene file's statements, to find definitions that come late, or NULL */
-	const char *defining;      /* the material whose block is being checked, or NULL */
-	bool include_failed;       /* an include could not be read: its names are unknown, not wrong */
-};
-
-/* FNV-1a with a final mix: unlike h * 33 + c, whose collisions a scene can spell
- * ("az" and "bY" hash alike, so do all 2^k strings of k such pairs), it does not let a
- * hostile scene put every name in one bucket and make each lookup linear. */
-static size_t hash_name(const char *s)
-{
-	uint64_t h = 0xcbf29ce484222325u;
-	while (*s)
-		h = (h ^ (unsigned char)*s++) * 0x100000001b3u;
-	h ^= h >> 33;
-	h *= 0xff51afd7ed558ccdu;
-	h ^= h >> 33;
-	return (size_t)h;
-}
-
-static struct name_entry *entry_for(struct checker *c, const char *name, bool create)
-{
-	struct name_entry **slot = &c->buckets[hash_name(name) & (c->nbuckets - 1)];
-	for (struct name_entry *e = *slot; e; e = e->next)
-		if (strcmp(e->name, name) == 0)
-			return e;
-	if (!create)
-		return NULL;
-	if (c->nentries >= 2 * c->nbuckets) {
-		size_t n = c->nbuckets * 4;
-		struct name_entry **b = xcalloc(n, sizeof *b);
-		for (size_t i = 0; i < c->nbuckets; i++)
-			for (struct name_entry *e = c->buckets[i], *next; e; e = next) {
-				next = e->next;
-				size_t h = hash_name(e->name) & (n - 1);
-				e->next = b[h];
-				b[h] = e;
-			}
-		free(c->buckets);
-		c->buckets = b;
-		c->nbuckets = n;
-		slot = &c->buckets[hash_name(name) & (n - 1)];
-	}
-	struct name_entry *e = arena_alloc(c->arena, sizeof *e);
-	e->name = name;
-	e->next = *slot;
-	*slot = e;
-	c->nentries++;
-	return e;
-}
-
-static struct binding *lookup(struct checker *c, const char *name)
-{
-	struct name_entry *e = entry_for(c, name, false);
-	return e ? e->top : NULL;
-}
-
-/* Visible names of the given kind (values include loop variables and pi, but not the
- * functions: a name used as a value should not be told to become one). */
-static void suggest_visible(struct checker *c, struct suggestion *s, bool materials)
-{
-	for (size_t i = 0; i < c->nbuckets; i++)
-		for (struct name_entry *e = c->buckets[i]; e; e = e->next)
-			if (e->top && (e->top->kind == BIND_MATERIAL) == materials)
-				suggest_consider(s, e->name);
-	if (!materials)
-		suggest_consider(s, builtin_name(CONST_PI));
-}
-
-static void push_scope(struct checker *c)
-{
-	c->scope_bindings[++c->scope] = NULL;
-}
-
-/* Leaves a scope: warns about what it bound and never used, and unhides what it hid.
- * After an error the warning is left out: the use may be what the error was about, or
- * in text that recovery skipped. */
-static void pop_scope(struct checker *c)
-{
-	/* the list is newest first: reversed, the warnings come in the order of the file */
-	struct binding *oldest = NULL;
-	for (struct binding *b = c->scope_bindings[c->scope], *next; b; b = next) {
-		next = b->scope_next;
-		b->scope_next = oldest;
-		oldest = b;
-	}
-	for (struct binding *b = oldest; b; b = b->scope_next) {
-		/* nor for what an included file defines: a library need not use all it offers */
-		if (!b->used && b->kind != BIND_LOOP && c->diag->errors == 0 && !diag_source_at(c->diag, b->span.start)->included)
-			diag_warning(c->diag, b->span, b->kind == BIND_MATERIAL ? "material '%s' is never used"
-			                                                         : "'%s' is never used", b->name);
-		b->entry->top = b->shadowed;
-	}
-	c->scope--;
-}
-
-/* Functions are only ever called, so they live apart from bindings: a material may be
- * called 'floor' (LANGUAGE.md's own example does). A binding may also hide 'pi'. */
-static struct binding *bind(struct checker *c, const char *name, struct span sp, enum binding_kind kind,
-                            enum ast_type type)
-{
-	struct name_entry *e = entry_for(c, name, true);
-	if (e->top && e->top->scope == c->scope) {
-		diag_error(c->diag, sp, "'%s' is already defined in this scope", name);
-		diag_note(c->diag, e->top->span, "'%s' was defined here", name);
-		return NULL;
-	}
-	struct binding *b = arena_alloc(c->arena, sizeof *b);
-	b->name = name;
-	b->span = sp;
-	b->kind = kind;
-	b->type = type;
-	b->slot = c->nslots++;
-	b->scope = c->scope;
-	b->entry = e;
-	b->shadowed = e->top;
-	e->top = b;
-	b->scope_next = c->scope_bindings[c->scope];
-	c->scope_bindings[c->scope] = b;
-	return b;
-}
-
 /* ---- expressions ---- */
 
-static const char *type_name(enum ast_type t)
+const char *type_name(enum ast_type t)
 {
 	switch (t) {
 	case TYPE_NUM: return "a number";
@@ -177,7 +34,6 @@ static const char *type_name(enum ast_type t)
 	}
 }
 
-static enum ast_type check_expr(struct checker *c, struct ast *e);
 
 /* An operand of arithmetic must be a number or a vector. */
 static bool arithmetic(struct checker *c, struct ast *e, enum ast_type t)
@@ -210,7 +66,7 @@ static const struct ast *later_definition(const struct ast_list *stmts, const ch
 }
 
 /* Reports a name that means nothing here, with the most useful hint. */
-static void unknown_name(struct checker *c, struct span at, const char *name, bool material)
+void unknown_name(struct checker *c, struct span at, const char *name, bool material)
 {
 	/* it may well be defined in a file that could not be read; and once the run has
 	 * stopped nothing prints, so the searches below (all names, all statements) are skipped */
@@ -229,7 +85,7 @@ static void unknown_name(struct checker *c, struct span at, const char *name, bo
 	struct suggestion s;
 	char buf[96];
 	suggest_init(&s, name);
-	suggest_visible(c, &s, material);
+	names_suggest_visible(c, &s, material);
 	diag_error(c->diag, at, "unknown %s '%s'%s", what, name, suggest_text(&s, buf, sizeof buf));
 	const struct ast *later = c->root ? later_definition(c->root, name, at.start, diag_source_at(c->diag, at.start), c->diag)
 	                                  : NULL;
@@ -241,7 +97,7 @@ static void unknown_name(struct checker *c, struct span at, const char *name, bo
 static enum ast_type check_ident(struct checker *c, struct ast *e)
 {
 	const char *name = e->u.ident.name;
-	struct binding *b = lookup(c, name);
+	struct binding *b = names_lookup(c, name);
 	if (b) {
 		b->used = true;
 		e->u.ident.ref = b;
@@ -276,7 +132,7 @@ static enum ast_type check_call(struct checker *c, struct ast *e)
 		for (int b = 0; b < BUILTIN_COUNT; b++)
 			if (builtin_is_function(b))
 				suggest_consider(&s, builtin_name(b));
-		if (lookup(c, name) || fn >= 0)
+		if (names_lookup(c, name) || fn >= 0)
 			diag_error(c->diag, e->u.call.name_span, "'%s' is not a function", name);
 		else
 			diag_error(c->diag, e->u.call.name_span, "unknown function '%s'%s", name,
@@ -376,306 +232,9 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 	}
 }
 
-static enum ast_type check_expr(struct checker *c, struct ast *e)
+enum ast_type check_expr(struct checker *c, struct ast *e)
 {
 	return e->type = check_expr_inner(c, e);
-}
-
-/* ---- blocks: which attributes each takes, and their shapes ---- */
-
-enum shape {
-	S_FLAG,       /* no value */
-	S_NUM, S_VEC, /* one expression; a number is promoted to a vector */
-	S_INT2,       /* two numbers: resolution W, H */
-	S_STR,        /* one string */
-	S_MATERIAL,   /* a material's name, or an inline material { } */
-	S_LIKE,       /* a material's name */
-	S_PATTERN,    /* a sampling pattern's name */
-	S_PIGMENT,    /* a colour or checker(...) */
-	S_LIST,       /* { V, V, ... } */
-};
-
-struct attr_spec {
-	unsigned char kw, shape;
-	bool repeat;               /* transforms: any number, applied in order */
-};
-
-#define TRANSFORMS { KW_TRANSLATE, S_VEC, true }, { KW_ROTATE, S_VEC, true }, { KW_SCALE, S_VEC, true }
-
-static const struct attr_spec camera_attrs[] = {
-	{ KW_LOCATION, S_VEC, false }, { KW_LOOK_AT, S_VEC, false }, { KW_UP, S_VEC, false },
-	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false },
-};
-static const struct attr_spec light_attrs[] = {
-	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },
-	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false },
-};
-static const struct attr_spec material_attrs[] = {
-	{ KW_LIKE, S_LIKE, false }, { KW_DIFFUSE, S_PIGMENT, false }, { KW_SPECULAR, S_VEC, false },
-	{ KW_SHININESS, S_NUM, false }, { KW_REFLECT, S_VEC, false }, { KW_TRANSMIT, S_VEC, false },
-	{ KW_IOR, S_NUM, false }, { KW_FRESNEL, S_FLAG, false }, { KW_EMIT, S_VEC, false },
-};
-static const struct attr_spec shape_attrs[] = {
-	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS,
-};
-static const struct attr_spec mesh_attrs[] = {
-	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_SMOOTH, S_FLAG, false },
-	{ KW_VERTICES, S_LIST, false }, { KW_FACES, S_LIST, false }, { KW_NORMALS, S_LIST, false },
-};
-static const struct attr_spec skybox_attrs[] = {
-	{ KW_COLOR, S_VEC, false }, { KW_ZENITH, S_VEC, false }, { KW_HORIZON, S_VEC, false },
-	{ KW_IMAGE, S_STR, false }, { KW_ROTATE, S_NUM, false }, { KW_INTENSITY, S_NUM, false },
-};
-static const struct attr_spec samples_attrs[] = {
-	{ KW_COUNT, S_NUM, false }, { KW_PATTERN, S_PATTERN, false }, { KW_SEED, S_NUM, false },
-	{ KW_TARGET_ERROR, S_NUM, false },
-};
-
-struct block_spec {
-	const char *what;
-	const struct attr_spec *attrs;
-	size_t nattrs;
-	const char *positional;    /* shapes of the positional arguments, as S_ codes + '0' */
-	const char *signature;     /* how the positional arguments are written, for messages */
-	const char *names[3];      /* what each positional argument is, for messages */
-};
-
-#define SPEC(what, attrs, pos, sig, ...) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig, { __VA_ARGS__ } }
-static const struct block_spec camera_spec = SPEC("camera", camera_attrs, "", NULL, NULL);
-static const struct block_spec light_spec = SPEC("light", light_attrs, "", NULL, NULL);
-static const struct block_spec material_spec = SPEC("material", material_attrs, "", NULL, NULL);
-static const struct block_spec sphere_spec = SPEC("sphere", shape_attrs, "21", "sphere { CENTER, RADIUS ... }",
-                                                  "the sphere's center", "the sphere's radius");
-static const struct block_spec plane_spec = SPEC("plane", shape_attrs, "21", "plane { NORMAL, OFFSET ... }",
-                                                 "the plane's normal", "the plane's offset");
-static const struct block_spec triangle_spec = SPEC("triangle", shape_attrs, "222", "triangle { A, B, C ... }",
-                                                    "a triangle's corner", "a triangle's corner", "a triangle's corner");
-static const struct block_spec mesh_spec = SPEC("mesh", mesh_attrs, "", NULL, NULL);
-static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL, NULL);
-static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL, NULL);
-
-static const struct attr_spec *find_attr(const struct block_spec *spec, int kw)
-{
-	for (size_t i = 0; i < spec->nattrs; i++)
-		if (spec->attrs[i].kw == kw)
-			return &spec->attrs[i];
-	return NULL;
-}
-
-static const char *item_name(const struct ast *item)
-{
-	return item->u.item.kw >= 0 ? kw_name(item->u.item.kw) : item->u.item.name;
-}
-
-/* Checks one expression against the shape S_NUM or S_VEC (or S_PIGMENT). */
-static void check_value(struct checker *c, struct ast *e, enum shape shape, const char *attr)
-{
-	enum ast_type t = check_expr(c, e);
-	if (t == TYPE_NONE)
-		return;
-	if (t == TYPE_NUM || (t == TYPE_VEC && shape != S_NUM) || (t == TYPE_PIGMENT && shape == S_PIGMENT))
-		return;
-	const char *want = shape == S_NUM ? "a number" : shape == S_STR ? "a string" : "a vector or colour";
-	if (t == TYPE_PIGMENT)
-		diag_error(c->diag, e->span, "checker(...) can only be the value of diffuse");
-	else if (strchr(attr, ' ')) /* a phrase ("the sphere's radius"), not an attribute's name */
-		diag_error(c->diag, e->span, "%s must be %s, found %s", attr, want, type_name(t));
-	else
-		diag_error(c->diag, e->span, "'%s' takes %s, found %s", attr, want, type_name(t));
-}
-
-/* A name argument (material, like, pattern): a lone identifier. */
-static struct ast *name_arg(struct checker *c, struct ast *item, const char *what)
-{
-	struct ast_list *args = &item->u.item.args;
-	if (args->n > 1 && args->v[0]->kind == AST_IDENT) {
-		diag_error(c->diag, args->v[1]->span, "'%s' takes one name", item_name(item));
-		return NULL;
-	}
-	if (args->n == 1 && args->v[0]->kind == AST_IDENT)
-		return args->v[0];
-	diag_error(c->diag, args->n ? args->v[0]->span : item->u.item.name_span, "'%s' takes the name of %s",
-	           item_name(item), what);
-	return NULL;
-}
-
-static void check_material_ref(struct checker *c, struct ast *id)
-{
-	const char *name = id->u.ident.name;
-	struct binding *b = lookup(c, name);
-	if (b && b->kind == BIND_MATERIAL) {
-		b->used = true;
-		id->u.ident.ref = b;
-		id->type = TYPE_MATERIAL;
-		return;
-	}
-	if (b) {
-		diag_error(c->diag, id->span, "'%s' is not a material", name);
-		return;
-	}
-	unknown_name(c, id->span, name, true);
-}
-
-static bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
-                        struct span where, struct ast *seen[KW_COUNT_ALL]);
-
-static void check_pattern(struct checker *c, struct ast *id)
-{
-	for (int p = 0; p < PATTERN_COUNT; p++)
-		if (strcmp(id->u.ident.name, pattern_name(p)) == 0) {
-			id->u.ident.builtin = p;
-			return;
-		}
-	struct suggestion s;
-	char buf[96];
-	suggest_init(&s, id->u.ident.name);
-	for (int p = 0; p < PATTERN_COUNT; p++)
-		suggest_consider(&s, pattern_name(p));
-	if (s.best)
-		diag_error(c->diag, id->span, "unknown pattern '%s'%s", id->u.ident.name, suggest_text(&s, buf, sizeof buf));
-	else
-		diag_error(c->diag, id->span, "unknown pattern '%s'; the patterns are center, grid, random, jittered and poisson",
-		           id->u.ident.name);
-}
-
-static void check_item(struct checker *c, struct ast *item, const struct attr_spec *a)
-{
-	struct ast_list *args = &item->u.item.args;
-	const char *name = item_name(item);
-	struct span at = item->u.item.name_span;
-	for (size_t i = 0; i < args->n; i++)
-		if (args->v[i]->kind == AST_ERROR) /* reported where it is; its shape would be a guess */
-			return;
-
-	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL) {
-		diag_error(c->diag, item->u.item.block->open, "'%s' takes a value, not a block", name);
-		return;
-	}
-	switch (a->shape) {
-	case S_FLAG:
-		if (args->n)
-			diag_error(c->diag, args->v[0]->span, "'%s' takes no value", name);
-		return;
-	case S_NUM: case S_VEC: case S_PIGMENT: case S_STR:
-		if (args->n == 0) {
-			diag_error(c->diag, at, "'%s' needs a value", name);
-			return;
-		}
-		if (args->n > 1) {
-			diag_error(c->diag, args->v[1]->span, "'%s' takes one value%s", name,
-			           args->n == 3 && a->shape != S_NUM ? "; write three numbers as a vector, <x, y, z>" : "");
-			return;
-		}
-		if (a->shape == S_STR) {
-			if (args->v[0]->kind != AST_STR)
-				diag_error(c->diag, args->v[0]->span, "'%s' takes a file name in quotes", name);
-			return;
-		}
-		if (args->v[0]->kind == AST_STR) {
-			diag_error(c->diag, args->v[0]->span, "'%s' takes a value, not a string", name);
-			return;
-		}
-		check_value(c, args->v[0], a->shape, name);
-		return;
-	case S_INT2:
-		if (args->n != 2) {
-			diag_error(c->diag, args->n > 2 ? args->v[2]->span : item->span,
-			           "'%s' takes two numbers: width, height", name);
-			return;
-		}
-		for (int i = 0; i < 2; i++)
-			if (args->v[i]->kind == AST_STR)
-				diag_error(c->diag, args->v[i]->span, "'%s' takes numbers, not a string", name);
-			else
-				check_value(c, args->v[i], S_NUM, name);
-		return;
-	case S_MATERIAL:
-		if (item->u.item.block && item->u.item.block->broken)
-			return;
-		if (item->u.item.block) {
-			struct ast *seen[KW_COUNT_ALL] = { 0 };
-			check_block(c, &material_spec, item->u.item.block, at, seen);
-			return;
-		}
-		if ((item = name_arg(c, item, "a material, or { ... }")))
-			check_material_ref(c, item);
-		return;
-	case S_LIKE:
-		if ((item = name_arg(c, item, "a material")))
-			check_material_ref(c, item);
-		return;
-	case S_PATTERN:
-		if ((item = name_arg(c, item, "a pattern")))
-			check_pattern(c, item);
-		return;
-	case S_LIST:
-		if (item->u.item.block && item->u.item.block->broken)
-			return;
-		if (!item->u.item.block) {
-			diag_error(c->diag, args->n ? args->v[0]->span : at, "'%s' takes a list in braces: %s { ... }",
-			           name, name);
-			return;
-		}
-		for (size_t i = 0; i < item->u.item.block->args.n; i++) {
-			struct ast *e = item->u.item.block->args.v[i];
-			if (e->kind == AST_STR)
-				diag_error(c->diag, e->span, "'%s' lists vectors, not strings", name);
-			else
-				check_value(c, e, S_VEC, name);
-		}
-		return;
-	}
-}
-
-/* Checks a block's positional arguments and items; records the first item of each
- * attribute in seen[] for the statement's own rules. Returns false when an attribute
- * was unknown: what the block lacks may then be only misspelt. */
-static bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block,
-                        struct span where, struct ast *seen[KW_COUNT_ALL])
-{
-	bool complete = true;
-	size_t npos = strlen(spec->positional);
-	struct ast_list *args = &block->args;
-	if (spec->signature && args->n != npos) {
-		struct span at = args->n > npos ? args->v[npos]->span : args->n ? args->v[args->n - 1]->span : where;
-		diag_error(c->diag, at, "%s takes %zu value%s before its attributes: %s", spec->what, npos,
-		           npos == 1 ? "" : "s", spec->signature);
-	}
-	for (size_t i = 0; i < args->n && i < npos; i++) {
-		if (args->v[i]->kind == AST_STR)
-			diag_error(c->diag, args->v[i]->span, "%s takes a value here, not a string", spec->what);
-		else
-			check_value(c, args->v[i], spec->positional[i] - '0', spec->names[i]);
-	}
-
-	for (size_t i = 0; i < block->items.n; i++) {
-		struct ast *item = block->items.v[i];
-		const struct attr_spec *a = item->u.item.kw >= 0 ? find_attr(spec, item->u.item.kw) : NULL;
-		if (!a) {
-			struct suggestion s;
-			char buf[160];
-			suggest_init(&s, item_name(item));
-			for (size_t k = 0; k < spec->nattrs; k++)
-				suggest_consider(&s, kw_name(spec->attrs[k].kw));
-			const char *hint = s.best ? suggest_text(&s, buf, sizeof buf) : suggest_pov_hint(item_name(item), buf, sizeof buf);
-			diag_error(c->diag, item->u.item.name_span, "unknown attribute '%s' in %s%s", item_name(item),
-			           spec->what, hint ? hint : "");
-			complete = false;
-			continue;
-		}
-		struct ast **first = &seen[a->kw];
-		if (*first && !a->repeat) {
-			diag_error(c->diag, item->u.item.name_span, "'%s' is given twice in %s", item_name(item), spec->what);
-			diag_note(c->diag, (*first)->u.item.name_span, "first given here");
-			continue;
-		}
-		if (!*first)
-			*first = item;
-		if (a->kw == KW_LIKE && i != 0)
-			diag_error(c->diag, item->u.item.name_span, "'like' must come first in a material");
-		check_item(c, item, a);
-	}
-	return complete;
 }
 
 /* ---- statements ---- */
@@ -766,22 +325,6 @@ static void check_readable(struct checker *c, const struct source *src, struct a
 	free(path);
 }
 
-static const struct block_spec *spec_of(enum kw kw)
-{
-	switch (kw) {
-	case KW_CAMERA: return &camera_spec;
-	case KW_LIGHT: return &light_spec;
-	case KW_MATERIAL: return &material_spec;
-	case KW_SPHERE: return &sphere_spec;
-	case KW_PLANE: return &plane_spec;
-	case KW_TRIANGLE: return &triangle_spec;
-	case KW_MESH: return &mesh_spec;
-	case KW_SKYBOX: return &skybox_spec;
-	case KW_SAMPLES: return &samples_spec;
-	default: return NULL;
-	}
-}
-
 static void check_block_stmt(struct checker *c, struct ast *s)
 {
 	enum kw kw = s->u.stmt.kw;
@@ -803,7 +346,7 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 	}
 	if (s->u.stmt.block->broken) { /* a syntax error was reported inside */
 		if (kw == KW_MATERIAL)
-			s->u.stmt.b = bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
+			s->u.stmt.b = names_bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
 		return;
 	}
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
@@ -818,7 +361,7 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 	    seen[KW_IMAGE]->u.item.args.v[0]->kind == AST_STR)
 		check_readable(c, src, seen[KW_IMAGE]->u.item.args.v[0], "skybox image");
 	if (kw == KW_MATERIAL)
-		s->u.stmt.b = bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
+		s->u.stmt.b = names_bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
 }
 
 static void check_include(struct checker *c, struct ast *inc)
@@ -907,7 +450,7 @@ void check_statement(struct checker *c, struct ast *s)
 			           type_name(t));
 			t = TYPE_NONE;
 		}
-		s->u.let.b = bind(c, s->u.let.name, s->u.let.name_span, BIND_VALUE, t);
+		s->u.let.b = names_bind(c, s->u.let.name, s->u.let.name_span, BIND_VALUE, t);
 		if (s->u.let.b && t == TYPE_NONE)
 			s->u.let.b->used = true; /* already reported; no "never used" on top */
 		break;
@@ -925,14 +468,14 @@ void check_statement(struct checker *c, struct ast *s)
 		}
 		/* the loop variable has a scope of its own, around the body's: the body may
 		 * rebind its name (let i = i * 10) */
-		push_scope(c);
+		names_push_scope(c);
 		c->loop_depth++;
-		s->u.loop.b = bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
-		push_scope(c);
+		s->u.loop.b = names_bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
+		names_push_scope(c);
 		check_stmts(c, &s->u.loop.body);
-		pop_scope(c);
+		names_pop_scope(c);
 		c->loop_depth--;
-		pop_scope(c);
+		names_pop_scope(c);
 		break;
 	case AST_UNKNOWN_STMT:
 		unknown_statement(c, s);
@@ -962,7 +505,7 @@ struct checker *checker_new(struct arena *nodes, struct arena *keep, struct diag
 	c->buckets = xcalloc(c->nbuckets, sizeof *c->buckets);
 	c->include_stack[0] = realpath(src->path, NULL); /* NULL for standard input */
 	c->root = root;
-	push_scope(c);
+	names_push_scope(c);
 	return c;
 }
 
@@ -974,7 +517,7 @@ unsigned checker_slots(const struct checker *c)
 void checker_free(struct checker *c, bool finished)
 {
 	if (finished && !diag_stopped(c->diag))
-		pop_scope(c);
+		names_pop_scope(c);
 	free(c->include_stack[0]);
 	free(c->buckets);
 	free(c);

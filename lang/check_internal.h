@@ -1,0 +1,90 @@
+/* check_internal.h: what the checker's files share, and nothing outside them uses:
+ * the checker's state and the calls between check.c (expressions, statements, the entry
+ * points), check_names.c (the symbol table) and check_block.c (the blocks' attributes). */
+#ifndef SCN_CHECK_INTERNAL_H
+#define SCN_CHECK_INTERNAL_H
+
+#include <stdbool.h>
+
+#include "ast.h"
+#include "check.h"
+#include "keywords.h"
+#include "lang.h"
+#include "suggest.h"
+
+struct name_entry {
+	const char *name;
+	struct binding *top;
+	struct name_entry *next;
+};
+
+struct checker {
+	struct arena *arena;       /* bindings and the symbol table: kept for the whole load */
+	struct arena *nodes;       /* the syntax trees of included files */
+	struct diag *diag;
+	struct name_entry **buckets;
+	size_t nbuckets, nentries;
+	unsigned scope;            /* depth of the current scope; the file scope is 1 */
+	struct binding *scope_bindings[2 * LANG_MAX_NESTING + 2]; /* a loop opens two */
+	unsigned nslots;
+	unsigned loop_depth;
+	int include_depth;
+	unsigned nincludes;        /* files read by includes so far, against LANG_MAX_INCLUDES */
+	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
+	/* camera, skybox, samples, max_depth seen so far, by place: the statement itself
+	 * may be gone when the file is checked one statement at a time */
+	struct { bool seen; struct span at; } once[KW_COUNT_ALL];
+	struct ast_list *root;     /* the scene file's statements, to find definitions that come late, or NULL */
+	const char *defining;      /* the material whose block is being checked, or NULL */
+	bool include_failed;       /* an include could not be read: its names are unknown, not wrong */
+};
+
+enum shape {
+	S_FLAG,       /* no value */
+	S_NUM, S_VEC, /* one expression; a number is promoted to a vector */
+	S_INT2,       /* two numbers: resolution W, H */
+	S_STR,        /* one string */
+	S_MATERIAL,   /* a material's name, or an inline material { } */
+	S_LIKE,       /* a material's name */
+	S_PATTERN,    /* a sampling pattern's name */
+	S_PIGMENT,    /* a colour or checker(...) */
+	S_LIST,       /* { V, V, ... } */
+};
+
+/* ---- check_names.c ---- */
+
+/* The innermost binding of name, or NULL. */
+struct binding *names_lookup(struct checker *c, const char *name);
+/* Offers s every visible name: materials, or values and loop variables. */
+void names_suggest_visible(struct checker *c, struct suggestion *s, bool materials);
+/* A scope opens; one closes, warning about what it bound and never used. */
+void names_push_scope(struct checker *c);
+void names_pop_scope(struct checker *c);
+/* Binds name in the current scope (a redefinition there is an error); the new binding. */
+struct binding *names_bind(struct checker *c, const char *name, struct span sp, enum binding_kind kind,
+                           enum ast_type type);
+
+/* ---- check.c ---- */
+
+const char *type_name(enum ast_type t);
+/* Reports an unknown name at `at`, with a suggestion or a note on a later definition. */
+void unknown_name(struct checker *c, struct span at, const char *name, bool material);
+/* Checks e and annotates it with its type. */
+enum ast_type check_expr(struct checker *c, struct ast *e);
+
+/* ---- check_block.c ---- */
+
+struct block_spec;
+/* The attributes of a block statement's keyword, or NULL. */
+const struct block_spec *spec_of(enum kw kw);
+/* Checks a block's positional arguments and items; records the first item of each
+ * attribute in seen[] for the statement's own rules. Returns false when an attribute
+ * was unknown: what the block lacks may then be only misspelt. */
+bool check_block(struct checker *c, const struct block_spec *spec, struct ast_block *block, struct span where,
+                 struct ast *seen[KW_COUNT_ALL]);
+/* Checks a value of the given shape for attribute attr. */
+void check_value(struct checker *c, struct ast *e, enum shape shape, const char *attr);
+/* An item's keyword as written. */
+const char *item_name(const struct ast *item);
+
+#endif
