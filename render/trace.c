@@ -127,10 +127,11 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 			double tmax = INFINITY;
 			if (li->kind == LIGHT_POINT) {
 				struct vec3 to = vsub(li->pos, shadow.o);
-				tmax = vlen(to) * (1 - 1e-9);
+				double len = vlen(to);
+				tmax = len * (1 - 1e-9);
 				if (!(tmax > 0))
 					continue;
-				shadow.d = vscale(to, 1 / vlen(to));
+				shadow.d = vscale(to, 1 / len);
 			}
 			st->shadow++;
 			color = vmul(color, accel_transmittance(sc, &shadow, tmax));
