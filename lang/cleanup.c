@@ -43,6 +43,43 @@ static void remove_all(void)
 			}
 }
 
+/* A crash (a bug in scn, or a failing machine) ends the run as the signal would, after
+ * the same removals, with a message that says so. Not in a sanitizer build, whose own
+ * handlers report where a crash happened. */
+#if defined(__SANITIZE_ADDRESS__)
+#define SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SANITIZED 1
+#endif
+#endif
+#ifndef SANITIZED
+static const struct {
+	int sig;
+	const char *line;
+} crashes[] = {
+	{ SIGSEGV, "scn: crashed with SIGSEGV (a bug in scn); its temporary files are removed\n" },
+	{ SIGBUS, "scn: crashed with SIGBUS (a bug in scn, or a file changed under it); its temporary files are removed\n" },
+	{ SIGFPE, "scn: crashed with SIGFPE (a bug in scn); its temporary files are removed\n" },
+	{ SIGILL, "scn: crashed with SIGILL (a bug in scn, or a build for another CPU); its temporary files are removed\n" },
+	{ SIGABRT, "scn: crashed with SIGABRT (a bug in scn); its temporary files are removed\n" },
+};
+enum { NCRASHES = sizeof crashes / sizeof crashes[0] };
+
+static void on_crash(int sig)
+{
+	remove_all();
+	for (int i = 0; i < NCRASHES; i++)
+		if (crashes[i].sig == sig) {
+			ssize_t ignored = write(2, crashes[i].line, strlen(crashes[i].line));
+			(void)ignored;
+		}
+	/* SA_RESETHAND has put the default action back: the signal, raised again or
+	 * re-raised by the faulting instruction, ends the process */
+	raise(sig);
+}
+#endif
+
 static void on_signal(int sig)
 {
 	remove_all();
@@ -70,6 +107,12 @@ void cleanup_install_signals(void)
 			continue;
 		sigaction(handled[i], &sa, NULL);
 	}
+#ifndef SANITIZED
+	struct sigaction crash = { .sa_handler = on_crash, .sa_flags = SA_RESETHAND };
+	sigemptyset(&crash.sa_mask);
+	for (int i = 0; i < NCRASHES; i++)
+		sigaction(crashes[i].sig, &crash, NULL);
+#endif
 }
 
 bool cleanup_register(const char *path, bool dir)
@@ -126,6 +169,11 @@ pid_t cleanup_fork(void)
 			if (sigaction(handled[i], NULL, &sa) == 0 && sa.sa_handler == on_signal)
 				signal(handled[i], SIG_DFL);
 		}
+#ifndef SANITIZED
+		/* a crash there must not remove the parent's files */
+		for (int i = 0; i < NCRASHES; i++)
+			signal(crashes[i].sig, SIG_DFL);
+#endif
 	} else if (pid > 0) {
 		child = pid;
 	}

@@ -1,5 +1,6 @@
 /* cleanup.h: what a run must not leave behind when it ends early, by a signal (SIGINT,
- * SIGTERM, SIGHUP) or by running out of memory: its temporary files and folders and its
+ * SIGTERM, SIGHUP; or SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, a crash) or by running
+ * out of memory: its temporary files and folders and its
  * child process. Writers register them while they exist; the signal handler and
  * cleanup_exit remove them, then the process ends with the signal (status 128 + N) or the
  * given status. */
@@ -11,9 +12,12 @@
 #include <sys/types.h>
 
 /* Installs the handlers for SIGINT, SIGTERM and SIGHUP. A handler kills and reaps the
- * child, removes the registered files and then the folders, writes "scn: interrupted"
- * and ends the process by the same signal with its default action. It runs on the main
- * thread: render threads are started with the signals blocked (cleanup_block_signals). */
+ * child, removes the registered files and then the folders, writes "scn: stopped by
+ * SIGxxx" and ends the process by the same signal with its default action. It runs on
+ * the main thread: render threads are started with the signals blocked
+ * (cleanup_block_signals). Crash signals (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) get a
+ * handler that does the same in whichever thread crashed, saying that scn crashed;
+ * not in a build with AddressSanitizer, which reports crashes itself. */
 void cleanup_install_signals(void);
 
 /* Registers a temporary file (or, with dir, a folder removed after the files) to remove

@@ -5,6 +5,7 @@ SCN_LOG_COMPILER = $(SHELL) $(srcdir)/tests/run-test
 SH_LOG_COMPILER = $(SHELL)
 AM_TESTS_ENVIRONMENT = SCN='$(abs_builddir)/scn'; export SCN; \
 	SCN_SRCDIR='$(abs_srcdir)'; export SCN_SRCDIR; \
+	SCN_SANITIZED='$(SCN_SANITIZED)'; export SCN_SANITIZED; \
 	PROBE='$(abs_builddir)/tests/render/probe'; export PROBE; \
 	LSAN_OPTIONS="suppressions=$(abs_srcdir)/tests/lsan.supp:print_suppressions=0$${LSAN_OPTIONS:+:$$LSAN_OPTIONS}"; \
 	export LSAN_OPTIONS;

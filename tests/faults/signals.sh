@@ -1,6 +1,7 @@
 # signals.sh: SIGINT and SIGTERM during a render, and during scn converge's POV-Ray run,
 # end scn by that signal (status 128 + N) with no output, no temporary file and no
-# temporary folder left, an existing output untouched and the child process gone.
+# temporary folder left, an existing output untouched and the child process gone; so
+# does a crash (SIGSEGV) during a render.
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
@@ -58,6 +59,24 @@ interrupt_render() {
 }
 interrupt_render INT
 interrupt_render TERM
+
+# a crash (SIGSEGV sent from outside stands in for one): the same removals, the default
+# action's status, and a message that says scn crashed; a sanitizer build leaves crashes
+# to the sanitizer, which reports them itself
+if [ "$SCN_SANITIZED" != yes ]; then
+	rm -rf out && mkdir out
+	echo old >out/keep.png
+	"$SCN" render slow.scn -j 2 -q -o out/keep.png 2>"$work/err-SEGV" &
+	pid=$!
+	wait_for has_temp out || fail "SEGV: no temporary file appeared in out/"
+	kill -SEGV "$pid"
+	stopped "$pid"
+	[ "$status" -eq $((128 + $(kill -l SEGV))) ] || fail "render crashed by SIGSEGV exited $status"
+	[ "$(ls -A out)" = keep.png ] || fail "SIGSEGV left in out/: $(ls -A out | tr '\n' ' ')"
+	[ "$(cat out/keep.png)" = old ] || fail "SIGSEGV changed the existing output"
+	grep -qx "scn: crashed with SIGSEGV (a bug in scn); its temporary files are removed" "$work/err-SEGV" ||
+		{ fail "SIGSEGV: no message"; cat "$work/err-SEGV"; }
+fi
 
 # scn converge with a POV-Ray that never ends (a stand-in on PATH): the signal kills and
 # reaps it, and removes converge's temporary folder and the CSV's temporary file
