@@ -1,11 +1,11 @@
 /* bvh.c: a binned SAH bounding volume hierarchy (Wald, "On fast Construction of
  * SAH-based Bounding Volume Hierarchies", 2007), built binary and collapsed into
  * eight-wide nodes whose children's boxes one AVX slab test (or two SSE ones) handles at
- * once, nearest child first. Bounds are kept in float, rounded outward, so a box never loses what it
- * holds, and the slab test in float is made conservative by rounding the ray's origin
- * and 1/d outward and widening the exit distance (NUMERICS.md section 1; pbrt 3rd ed.
- * section 3.9.2); it is robust to zero direction components and origins on a slab (Ize,
- * "Robust BVH Ray Traversal", JCGT 2013).
+ * once, nearest child first. Bounds are kept in float, rounded outward, so a box never
+ * loses what it holds, and the slab test in float is made conservative by rounding the
+ * ray's origin and 1/d outward and widening the exit distance (NUMERICS.md section 1;
+ * pbrt 3rd ed. section 3.9.2); it is robust to zero direction components and origins on
+ * a slab (Ize, "Robust BVH Ray Traversal", JCGT 2013).
  *
  * The build splits the top of the tree on one thread and hands the subtrees below a size
  * fixed by the primitive count to worker threads, then joins their nodes in the order
@@ -32,8 +32,11 @@ enum {
 };
 
 /* Four floats, with SSE where there is SSE (every x86-64) and GCC's generic vectors
- * elsewhere: a box corner for the build, and one coordinate of the four children of a
- * node for the traversal. */
+ * elsewhere: a box corner for the build, and one coordinate of four children of a node
+ * for the node test without AVX. */
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
 #ifdef __SSE2__
 #include <emmintrin.h>
 typedef __m128 v4f;
@@ -562,8 +565,8 @@ uint64_t bvh_bytes(uint64_t n)
 	/* one primitive a leaf: n - 1 binary nodes, which exist twice while the workers'
 	 * arrays are joined, beside the build records; then once, beside the wide ones. Of
 	 * those, a node with fewer than WIDTH children has only leaves below it, two at
-	 * least, so I nodes over n leaves hold (I - 1) + n >= WIDTH (I - F) + 2F children
-	 * with F <= n / 2 such nodes: I <= n WIDTH / (2 (WIDTH - 1)). */
+	 * least, so I nodes over L <= n leaves hold (I - 1) + L >= WIDTH (I - F) + 2F
+	 * children with F <= L / 2 such nodes: I <= L WIDTH / (2 (WIDTH - 1)). */
 	uint64_t build = n * (sizeof(struct build_ref) + 2 * sizeof(struct bin_node));
 	uint64_t wide_nodes = (n * WIDTH + 2 * (WIDTH - 1) - 1) / (2 * (WIDTH - 1));
 	uint64_t wide = n * sizeof(struct bin_node) + wide_nodes * sizeof(struct bvh_node);
@@ -593,9 +596,8 @@ struct bvh_shape bvh_shape(const struct bvh *b)
  * widened, so the two bound the exact distances (before the float arithmetic's own
  * rounding, which the widening covers, see FAR_WIDEN). A zero component keeps a finite
  * |1/d| on the entry side (0 * inf would be NaN there); on the exit side 1/d is infinite,
- * and an origin on a slab plane gives 0 * inf = NaN, which slab() discards. */
+ * and an origin on a slab plane gives 0 * inf = NaN, which node_hit() discards. */
 #ifdef __AVX__
-#include <immintrin.h>
 typedef __m256 vray;       /* one value of the ray in every lane of a node test */
 static inline vray vray_set(float x) { return _mm256_set1_ps(x); }
 #else
@@ -657,13 +659,15 @@ static inline int node_hit(const struct bvh_node *n, const struct box_ray *s, vr
 {
 	__m256 tnear = _mm256_setzero_ps(), tfar = tmax;
 	for (int k = 0; k < 3; k++) {
-		__m256 t0 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->box[s->enter[k]]), s->o_near[k]), s->inv_near[k]);
-		__m256 t1 = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(n->box[s->leave[k]]), s->o_far[k]), s->inv_far[k]);
+		__m256 near = _mm256_sub_ps(_mm256_load_ps(n->box[s->enter[k]]), s->o_near[k]);
+		__m256 far = _mm256_sub_ps(_mm256_load_ps(n->box[s->leave[k]]), s->o_far[k]);
+		__m256 t0 = _mm256_mul_ps(near, s->inv_near[k]), t1 = _mm256_mul_ps(far, s->inv_far[k]);
 		tnear = _mm256_max_ps(t0, tnear);
 		tfar = _mm256_min_ps(t1, tfar);
 	}
 	_mm256_storeu_ps(t_enter, tnear);
-	return _mm256_movemask_ps(_mm256_cmp_ps(tnear, _mm256_add_ps(tfar, _mm256_set1_ps(FAR_SLACK)), _CMP_LE_OQ));
+	__m256 far_end = _mm256_add_ps(tfar, _mm256_set1_ps(FAR_SLACK));
+	return _mm256_movemask_ps(_mm256_cmp_ps(tnear, far_end, _CMP_LE_OQ));
 }
 #else
 /* four children at a time, from child h on */
