@@ -107,6 +107,14 @@ static double measure(const struct scene *sc, RTCScene rtc, bool embree, const s
 	return rate[REPEATS / 2];
 }
 
+/* Commits g and hands it to s. */
+static void attach(RTCScene s, RTCGeometry g)
+{
+	rtcCommitGeometry(g);
+	rtcAttachGeometry(s, g);
+	rtcReleaseGeometry(g);
+}
+
 static void embree_spheres(RTCDevice dev, RTCScene s, const struct scene *sc)
 {
 	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
@@ -122,20 +130,11 @@ static void embree_spheres(RTCDevice dev, RTCScene s, const struct scene *sc)
 		v[4 * i + 2] = (float)sc->spheres[i].center.z;
 		v[4 * i + 3] = (float)sc->spheres[i].radius;
 	}
-	rtcCommitGeometry(g);
-	rtcAttachGeometry(s, g);
-	rtcReleaseGeometry(g);
+	attach(s, g);
 }
 
-static RTCScene embree_scene(RTCDevice dev, const struct scene *sc)
+static void embree_triangles(RTCDevice dev, RTCScene s, const struct scene *sc)
 {
-	RTCScene s = rtcNewScene(dev);
-	if (sc->nspheres)
-		embree_spheres(dev, s, sc);
-	if (sc->ntriangles == 0) {
-		rtcCommitScene(s);
-		return s;
-	}
 	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
 	float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
 	                                   sc->nvertices);
@@ -153,9 +152,16 @@ static RTCScene embree_scene(RTCDevice dev, const struct scene *sc)
 	for (size_t i = 0; i < sc->ntriangles; i++)
 		for (int k = 0; k < 3; k++)
 			ix[3 * i + k] = sc->triangles[i].v[k];
-	rtcCommitGeometry(g);
-	rtcAttachGeometry(s, g);
-	rtcReleaseGeometry(g);
+	attach(s, g);
+}
+
+static RTCScene embree_scene(RTCDevice dev, const struct scene *sc)
+{
+	RTCScene s = rtcNewScene(dev);
+	if (sc->nspheres)
+		embree_spheres(dev, s, sc);
+	if (sc->ntriangles)
+		embree_triangles(dev, s, sc);
 	rtcCommitScene(s);
 	return s;
 }
