@@ -8,8 +8,8 @@
  * a slab (Ize, "Robust BVH Ray Traversal", JCGT 2013).
  *
  * The build splits the top of the tree on one thread and hands the subtrees below a size
- * fixed by the primitive count to worker threads, then joins their nodes in the order
- * the top split made them: the tree and its layout depend on the scene alone, never on
+ * fixed by the primitive count to worker threads, each node going to a slot fixed by
+ * where its split falls: the tree and its layout depend on the scene alone, never on
  * the thread count or on which thread finished first. */
 #include "bvh.h"
 
@@ -51,6 +51,8 @@ static inline v4f v4max(v4f a, v4f b) { return _mm_max_ps(a, b); }
 static inline v4f v4min(v4f a, v4f b) { return _mm_min_ps(a, b); }
 /* bit c set when a[c] <= b[c] */
 static inline int v4le(v4f a, v4f b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
+/* toward zero, lane by lane */
+static inline void v4trunc(v4f a, int out[4]) { _mm_storeu_si128((__m128i *)out, _mm_cvttps_epi32(a)); }
 #else
 typedef float v4f __attribute__((vector_size(16)));
 typedef int v4i __attribute__((vector_size(16)));
@@ -66,6 +68,11 @@ static inline int v4le(v4f a, v4f b)
 {
 	v4i m = a <= b;
 	return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
+}
+static inline void v4trunc(v4f a, int out[4])
+{
+	for (int i = 0; i < 4; i++)
+		out[i] = (int)a[i];
 }
 #endif
 
@@ -110,10 +117,35 @@ struct build_ref {
 	uint32_t prim, pad[3];
 };
 
-struct node_vec {
-	struct bin_node *v;
-	size_t n, cap;
+/* A box under construction: lo and hi as 4-vectors, the fourth lane unused. */
+struct vbox {
+	v4f lo, hi;
 };
+
+static inline struct vbox vbox_empty(void)
+{
+	return (struct vbox){ v4set(INFINITY), v4set(-INFINITY) };
+}
+
+static inline void vbox_add(struct vbox *b, v4f lo, v4f hi)
+{
+	b->lo = v4min(b->lo, lo);
+	b->hi = v4max(b->hi, hi);
+}
+
+/* What the build knows of a set of references before it splits them: the box of their
+ * bounds and the box of their centroids. Each split's partition works out its two
+ * sides', so no node needs a pass of its own over its references. */
+struct bounds {
+	struct vbox box, cbox;
+};
+
+static inline void bounds_add(struct bounds *b, const struct build_ref *r)
+{
+	v4f c = v4load(r->centroid);
+	vbox_add(&b->box, v4load(r->lo), v4load(r->hi));
+	vbox_add(&b->cbox, c, c);
+}
 
 /* A subtree left to a worker: its primitives are refs[first, +n); it becomes child c of
  * the top node parent (NO_PARENT: the root). */
@@ -121,13 +153,18 @@ struct node_vec {
 struct task {
 	uint32_t parent, c, first, n;
 	int depth;               /* its level in the tree */
-	struct child result;     /* the worker's result; its node indices are local to nodes */
-	struct node_vec nodes;
+	struct bounds bounds;    /* of its references */
 };
 
+/* The binary tree goes to bin, one slot per place a split can fall: the node that
+ * splits refs[first, +n) before refs[first + mid] is bin[first + mid - 1], a slot no
+ * other node can take. So every subtree, a worker's too, has its slots known before it
+ * is built, and the tree needs no joining of per-thread arrays. */
 struct builder {
 	struct build_ref *refs;
 	uint32_t *prims;
+	struct bin_node *bin;    /* n - 1 slots; the ones inside leaves stay unused */
+	struct child root;
 	bool brute;
 	size_t task_size;        /* a subtree this small becomes a task; 0 while inside one */
 	struct task *tasks;
@@ -158,22 +195,6 @@ static float float_above(double x)
 	return -float_below(-x);
 }
 
-/* A box under construction: lo and hi as 4-vectors, the fourth lane unused. */
-struct vbox {
-	v4f lo, hi;
-};
-
-static inline struct vbox vbox_empty(void)
-{
-	return (struct vbox){ v4set(INFINITY), v4set(-INFINITY) };
-}
-
-static inline void vbox_add(struct vbox *b, v4f lo, v4f hi)
-{
-	b->lo = v4min(b->lo, lo);
-	b->hi = v4max(b->hi, hi);
-}
-
 /* Half the surface area, in float: SAH only compares areas. */
 static inline float vbox_area(struct vbox b)
 {
@@ -184,44 +205,61 @@ static inline float vbox_area(struct vbox b)
 	return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
 }
 
-/* The bin of a centroid coordinate c, for bins of width 1/scale from lo. */
-static inline int bin_of(double c, double lo, double scale, int nbins)
+/* The bins of a set of centroids, on the three axes at once: lane a of (c - lo) * scale,
+ * clamped to [0, top] and truncated, in float; find_split() and partition() share it,
+ * so a centroid falls in the same bin in both. A NaN (the centroids of a scene beyond
+ * float range) falls in bin 0. */
+struct binning {
+	v4f lo, scale, top;
+};
+
+static struct binning binning_of(struct vbox cbox, int nbins)
 {
-	int k = (int)((c - lo) * scale);
-	return k < 0 ? 0 : k >= nbins ? nbins - 1 : k;
+	float lo[4], hi[4], scale[4] = { 0 };
+	v4store(lo, cbox.lo);
+	v4store(hi, cbox.hi);
+	for (int a = 0; a < 3; a++) {
+		float extent = hi[a] - lo[a];
+		scale[a] = extent > 0 ? (float)nbins / extent : 0;
+	}
+	return (struct binning){ cbox.lo, v4load(scale), v4set((float)(nbins - 1)) };
+}
+
+static inline void bins_of(const struct binning *bn, const float centroid[4], int k[4])
+{
+	v4f f = v4mul(v4sub(v4load(centroid), bn->lo), bn->scale);
+	v4trunc(v4min(v4max(f, v4set(0)), bn->top), k);
 }
 
 struct split {
 	int axis;                /* -1: none */
 	int bin;                 /* split before this bin */
-	int nbins;
-	double lo, scale;        /* the binning of that axis */
+	struct binning bn;
 };
 
 /* Finds the cheapest binned SAH split of refs[0, n) whose centroids span clo..chi, all
  * three axes binned in one pass, in as many bins as there are references up to NBINS
  * (the sweep over the bins would cost small nodes more than the binning). axis -1 when
  * keeping a leaf is cheaper. */
-static struct split find_split(const struct build_ref *refs, size_t n, const double clo[3], const double chi[3],
-                               double parent_area)
+static struct split find_split(const struct build_ref *refs, size_t n, struct vbox cbox, double parent_area)
 {
 	struct split best = { .axis = -1 };
 	int nbins = n < NBINS ? (int)n : NBINS;
-	double scale[3];
+	struct binning bn = binning_of(cbox, nbins);
+	float scale[4];
+	v4store(scale, bn.scale);
 	struct vbox bins[3][NBINS];
 	size_t counts[3][NBINS] = { { 0 } };
-	for (int axis = 0; axis < 3; axis++) {
-		double extent = chi[axis] - clo[axis];
-		scale[axis] = extent > 0 ? nbins / extent : 0;
+	for (int axis = 0; axis < 3; axis++)
 		for (int i = 0; i < nbins; i++)
 			bins[axis][i] = vbox_empty();
-	}
 	for (size_t i = 0; i < n; i++) {
 		v4f lo = v4load(refs[i].lo), hi = v4load(refs[i].hi);
+		int k[4];
+		bins_of(&bn, refs[i].centroid, k);
 		for (int axis = 0; axis < 3; axis++) {
-			int k = bin_of(refs[i].centroid[axis], clo[axis], scale[axis], nbins);
-			counts[axis][k]++;
-			vbox_add(&bins[axis][k], lo, hi);
+			counts[axis][k[axis]]++;
+			vbox_add(&bins[axis][k[axis]], lo, hi);
 		}
 	}
 	double best_cost = (double)n; /* cost of a leaf, in primitive tests */
@@ -250,88 +288,79 @@ static struct split find_split(const struct build_ref *refs, size_t n, const dou
 			double cost = 1.0 + (vbox_area(acc) * (double)cnt + right_area[i] * (double)right_count[i]) / parent_area;
 			if (cost < best_cost) {
 				best_cost = cost;
-				best = (struct split){ axis, i, nbins, clo[axis], scale[axis] };
+				best = (struct split){ axis, i, bn };
 			}
 		}
 	}
 	return best;
 }
 
-/* Puts the references whose centroid falls in a bin before s.bin first; returns how
- * many there are. The binning arithmetic is the same as find_split's. */
-static size_t partition(struct build_ref *refs, size_t n, struct split s)
+static inline bool goes_left(const struct split *s, const struct build_ref *r)
 {
+	int k[4];
+	bins_of(&s->bn, r->centroid, k);
+	return k[s->axis] < s->bin;
+}
+
+/* Puts the references whose centroid falls in a bin before s->bin first (Hoare's
+ * partition: only references on the wrong side move); returns how many there are, and
+ * the bounds of each side in side[0] and side[1]. */
+static size_t partition(struct build_ref *refs, size_t n, const struct split *s, struct bounds side[2])
+{
+	side[0] = side[1] = (struct bounds){ vbox_empty(), vbox_empty() };
 	size_t i = 0, j = n;
-	while (i < j) {
-		if (bin_of(refs[i].centroid[s.axis], s.lo, s.scale, s.nbins) < s.bin) {
-			i++;
-		} else {
-			struct build_ref tmp = refs[i];
-			refs[i] = refs[--j];
-			refs[j] = tmp;
-		}
+	for (;;) {
+		while (i < j && goes_left(s, &refs[i]))
+			bounds_add(&side[0], &refs[i++]);
+		while (i < j && !goes_left(s, &refs[j - 1]))
+			bounds_add(&side[1], &refs[--j]);
+		if (i == j)
+			return i;
+		struct build_ref tmp = refs[i];
+		refs[i] = refs[j - 1];
+		refs[j - 1] = tmp;
+		bounds_add(&side[0], &refs[i++]);
+		bounds_add(&side[1], &refs[--j]);
 	}
-	return i;
 }
 
-static uint32_t push_node(struct node_vec *nv)
-{
-	xgrow((void **)&nv->v, &nv->cap, nv->n + 1, sizeof *nv->v);
-	memset(&nv->v[nv->n], 0, sizeof *nv->v);
-	return (uint32_t)nv->n++;
-}
-
-static void set_child(struct bvh *bvh, struct node_vec *nv, uint32_t parent, uint32_t c, const struct child *ch)
-{
-	if (parent == NO_PARENT) {
-		bvh->root = *ch;
-		return;
-	}
-	nv->v[parent].kid[c] = *ch;
-}
-
-/* Builds the subtree of refs[first, first + n) into nv and returns it as its parent
- * sees it; at the top (b->task_size set) a small enough subtree is left to a worker, and
- * its parent's slot filled in later. */
-static struct child build(struct builder *b, struct node_vec *nv, uint32_t parent, uint32_t c, uint32_t first,
-                          uint32_t n, int level)
+/* Builds the subtree of refs[first, first + n) into b->bin and returns it as its parent
+ * sees it; at the top (b->task_size set) a small enough subtree is left to a worker,
+ * which fills in its parent's slot. */
+static struct child build(struct builder *b, uint32_t parent, uint32_t c, uint32_t first, uint32_t n, int level,
+                          struct bounds bd)
 {
 	struct child ch = { .count = 0 };
 	if (b->task_size && n <= b->task_size) {
 		xgrow((void **)&b->tasks, &b->cap_tasks, b->ntasks + 1, sizeof *b->tasks);
-		b->tasks[b->ntasks++] = (struct task){ .parent = parent, .c = c, .first = first, .n = n, .depth = level };
+		b->tasks[b->ntasks++] = (struct task){ .parent = parent, .c = c, .first = first, .n = n, .depth = level,
+		                                       .bounds = bd };
 		return ch;
 	}
 	struct build_ref *refs = b->refs + first;
-	struct vbox box = vbox_empty(), cbox = vbox_empty();
-	for (size_t i = 0; i < n; i++) {
-		vbox_add(&box, v4load(refs[i].lo), v4load(refs[i].hi));
-		v4f c = v4load(refs[i].centroid);
-		vbox_add(&cbox, c, c);
-	}
 	float lo[4], hi[4];
-	v4store(lo, box.lo);
-	v4store(hi, box.hi);
+	v4store(lo, bd.box.lo);
+	v4store(hi, bd.box.hi);
 	memcpy(ch.box, lo, 3 * sizeof *lo);
 	memcpy(ch.box + 3, hi, 3 * sizeof *hi);
-	v4store(lo, cbox.lo);
-	v4store(hi, cbox.hi);
-	double clo[3] = { lo[0], lo[1], lo[2] }, chi[3] = { hi[0], hi[1], hi[2] };
 
 	struct split s = { .axis = -1 };
 	if (!b->brute && n > 1 && level < MAX_DEPTH)
-		s = find_split(refs, n, clo, chi, vbox_area(box));
-	size_t mid = 0;
-	if (s.axis >= 0) {
-		mid = partition(refs, n, s);
-	} else if (!b->brute && n > MAX_LEAF && level < MAX_DEPTH) {
+		s = find_split(refs, n, bd.cbox, vbox_area(bd.box));
+	if (s.axis < 0 && !b->brute && n > MAX_LEAF && level < MAX_DEPTH) {
 		/* a leaf would be cheaper by SAH but is too big: split the widest axis in two
 		 * halves, which is binning with two bins */
-		double e[3] = { chi[0] - clo[0], chi[1] - clo[1], chi[2] - clo[2] };
-		int axis = e[0] >= e[1] && e[0] >= e[2] ? 0 : e[1] >= e[2] ? 1 : 2;
-		if (e[axis] > 0)
-			mid = partition(refs, n, (struct split){ axis, 1, 2, clo[axis], 2 / e[axis] });
+		s = (struct split){ -1, 1, binning_of(bd.cbox, 2) };
+		float scale[4];
+		v4store(scale, s.bn.scale);
+		for (int a = 0; a < 3; a++) /* the widest has the smallest nonzero scale */
+			if (scale[a] > 0 && (s.axis < 0 || scale[a] < scale[s.axis]))
+				s.axis = a;
 	}
+	size_t mid = 0;
+	struct bounds side[2];
+	if (s.axis >= 0)
+		mid = partition(refs, n, &s, side);
 	if (mid == 0 || mid == n) {
 		/* a leaf: its primitives go to prims[first, first + n) */
 		ch.index = first;
@@ -340,12 +369,10 @@ static struct child build(struct builder *b, struct node_vec *nv, uint32_t paren
 			b->prims[first + i] = refs[i].prim;
 		return ch;
 	}
-	uint32_t node = push_node(nv);
+	uint32_t node = first + (uint32_t)mid - 1;
 	ch.index = node;
-	struct child l = build(b, nv, node, 0, first, (uint32_t)mid, level + 1);
-	set_child(NULL, nv, node, 0, &l);
-	struct child r = build(b, nv, node, 1, first + (uint32_t)mid, n - (uint32_t)mid, level + 1);
-	set_child(NULL, nv, node, 1, &r);
+	b->bin[node].kid[0] = build(b, node, 0, first, (uint32_t)mid, level + 1, side[0]);
+	b->bin[node].kid[1] = build(b, node, 1, first + (uint32_t)mid, n - (uint32_t)mid, level + 1, side[1]);
 	return ch;
 }
 
@@ -356,10 +383,12 @@ static void *worker(void *arg)
 		size_t i = atomic_fetch_add(&b->next_task, 1);
 		if (i >= b->ntasks)
 			return NULL;
-		struct task *t = &b->tasks[i];
-		t->result = build(b, &t->nodes, NO_PARENT, 0, t->first, t->n, t->depth);
-		if (t->nodes.n) /* trimmed: bvh_bytes counts the nodes twice, not four times */
-			t->nodes.v = xrealloc(t->nodes.v, t->nodes.n * sizeof *t->nodes.v);
+		const struct task *t = &b->tasks[i];
+		struct child ch = build(b, t->parent, t->c, t->first, t->n, t->depth, t->bounds);
+		if (t->parent == NO_PARENT)
+			b->root = ch;
+		else
+			b->bin[t->parent].kid[t->c] = ch;
 	}
 }
 
@@ -376,34 +405,6 @@ static void run_tasks(struct builder *b, int threads)
 	for (int i = 0; i < started; i++)
 		pthread_join(tid[i], NULL);
 	free(tid);
-}
-
-/* Appends each task's nodes to the top nodes, in task order, and puts each subtree in
- * the slot the top split left for it. */
-static void join_tasks(struct builder *b, struct bvh *bvh, struct node_vec *top)
-{
-	size_t total = top->n;
-	for (size_t i = 0; i < b->ntasks; i++)
-		total += b->tasks[i].nodes.n;
-	if (total > top->cap) { /* exactly: this array is the tree's */
-		top->v = xrealloc(top->v, total * sizeof *top->v);
-		top->cap = total;
-	}
-	for (size_t i = 0; i < b->ntasks; i++) {
-		struct task *t = &b->tasks[i];
-		uint32_t base = (uint32_t)top->n;
-		for (size_t k = 0; k < t->nodes.n; k++) {
-			struct bin_node nd = t->nodes.v[k];
-			for (int c = 0; c < 2; c++)
-				if (nd.kid[c].count == 0)
-					nd.kid[c].index += base;
-			top->v[top->n++] = nd;
-		}
-		if (t->result.count == 0)
-			t->result.index += base;
-		set_child(bvh, top, t->parent, t->c, &t->result);
-		free(t->nodes.v);
-	}
 }
 
 /* The area of a child's box (vbox_area's), for choosing which child to open; a NaN from
@@ -492,20 +493,21 @@ static struct child collapse(struct collapse *cl, struct child ch, int level)
 	return ch;
 }
 
-/* The wide tree of the binary one: a pass to count, the array aligned to cache
- * lines, a pass to fill it. */
-static void make_wide(struct bvh *bvh, const struct bin_node *bin)
+/* The wide tree of the binary one, which it frees: a pass to count, the array aligned
+ * to cache lines, a pass to fill it. */
+static void make_wide(struct bvh *bvh, struct bin_node *bin)
 {
 	struct collapse cl = { .bin = bin };
 	collapse(&cl, bvh->root, 0);
 	bvh->nnodes = cl.next;
 	bvh->nboxes = cl.boxes + 1;
 	bvh->depth = cl.depth;
-	if (!cl.next)
-		return;
-	bvh->nodes = xaligned_alloc(64, cl.next * sizeof *bvh->nodes);
-	cl = (struct collapse){ .bin = bin, .out = bvh->nodes };
-	bvh->root = collapse(&cl, bvh->root, 0);
+	if (cl.next) {
+		bvh->nodes = xaligned_alloc(64, cl.next * sizeof *bvh->nodes);
+		cl = (struct collapse){ .bin = bin, .out = bvh->nodes };
+		bvh->root = collapse(&cl, bvh->root, 0);
+	}
+	free(bin);
 }
 
 struct bvh *bvh_build(const struct scene *sc, enum accel kind)
@@ -519,6 +521,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	size_t k = 0;
+	struct bounds root = { vbox_empty(), vbox_empty() };
 	for (size_t i = 0; i < sc->nspheres; i++, k++) {
 		const struct sphere *s = &sc->spheres[i];
 		for (int a = 0; a < 3; a++) {
@@ -528,6 +531,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 			b.refs[k].centroid[a] = (float)c;
 		}
 		b.refs[k].prim = prim_id(PRIM_SPHERE, (uint32_t)i);
+		bounds_add(&root, &b.refs[k]);
 	}
 	for (size_t i = 0; i < sc->ntriangles; i++, k++) {
 		const struct triangle *t = &sc->triangles[i];
@@ -539,20 +543,20 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 			b.refs[k].centroid[a] = (float)(0.5 * (vget(lo, a) + vget(hi, a)));
 		}
 		b.refs[k].prim = prim_id(PRIM_TRIANGLE, (uint32_t)i);
+		bounds_add(&root, &b.refs[k]);
 	}
+	b.bin = xmalloc((n > 1 ? n - 1 : 1) * sizeof *b.bin);
 	size_t task = n / TASKS_PER_TREE;
 	b.task_size = task > MIN_TASK ? task : MIN_TASK;
-	struct node_vec top = { 0 };
-	bvh->root = build(&b, &top, NO_PARENT, 0, 0, (uint32_t)n, 0);
+	b.root = build(&b, NO_PARENT, 0, 0, (uint32_t)n, 0, root);
 	b.task_size = 0;
 	long cores = sysconf(_SC_NPROCESSORS_ONLN);
 	atomic_init(&b.next_task, 0);
 	run_tasks(&b, cores > 0 ? (int)cores : 1);
-	join_tasks(&b, bvh, &top);
 	free(b.tasks);
 	free(b.refs);
-	make_wide(bvh, top.v);
-	free(top.v);
+	bvh->root = b.root;
+	make_wide(bvh, b.bin);
 	return bvh;
 }
 
@@ -579,12 +583,11 @@ void bvh_reorder(struct bvh *b, struct scene *sc)
 
 uint64_t bvh_bytes(uint64_t n)
 {
-	/* one primitive a leaf: n - 1 binary nodes, which exist twice while the workers'
-	 * arrays are joined, beside the build records; then once, beside the wide ones. Of
-	 * those, a node with fewer than WIDTH children has only leaves below it, two at
-	 * least, so I nodes over L <= n leaves hold (I - 1) + L >= WIDTH (I - F) + 2F
-	 * children with F <= L / 2 such nodes: I <= L WIDTH / (2 (WIDTH - 1)). */
-	uint64_t build = n * (sizeof(struct build_ref) + 2 * sizeof(struct bin_node));
+	/* the n - 1 slots of the binary nodes, beside the build records; then beside the
+	 * wide nodes. Of those, a node with fewer than WIDTH children has only leaves below
+	 * it, two at least, so I nodes over L <= n leaves hold (I - 1) + L >= WIDTH (I - F) +
+	 * 2F children with F <= L / 2 such nodes: I <= L WIDTH / (2 (WIDTH - 1)). */
+	uint64_t build = n * (sizeof(struct build_ref) + sizeof(struct bin_node));
 	uint64_t wide_nodes = (n * WIDTH + 2 * (WIDTH - 1) - 1) / (2 * (WIDTH - 1));
 	uint64_t wide = n * sizeof(struct bin_node) + wide_nodes * sizeof(struct bvh_node);
 	return n * sizeof(uint32_t) + (build > wide ? build : wide);
