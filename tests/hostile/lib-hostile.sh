@@ -10,7 +10,9 @@ vmem=${SCN_HOSTILE_VMEM:-2000000}
 # Multiplier of every time cap; SCN_HOSTILE_SLOW overrides.
 slow=${SCN_HOSTILE_SLOW:-1}
 
+# SCN_SANITIZED: yes or no from configure (tests/local.mk exports it), 1 or 0 by hand
 sanitized=${SCN_SANITIZED:-}
+case $sanitized in no | 0) sanitized= ;; esac
 if [ -z "$sanitized" ] && nm "$SCN" 2>/dev/null | grep -q '__asan_init\|__ubsan_handle'; then
 	sanitized=1
 fi
@@ -18,7 +20,7 @@ fi
 if [ -z "$sanitized" ] && ! sh -c 'ulimit -v "$1" && "$2" --version' sh "$vmem" "$SCN" >/dev/null 2>&1; then
 	sanitized=1
 fi
-if [ -n "$sanitized" ] && [ "$sanitized" != 0 ]; then
+if [ -n "$sanitized" ]; then
 	vmem=unlimited
 	slow=${SCN_HOSTILE_SLOW:-6}
 fi
