@@ -12,7 +12,7 @@ render_libscnrender_a_SOURCES = \
 	%D%/vec.h
 # what a program needs to link the renderer (after lang/libscnlang.a, if it uses it)
 RENDER_LIBS = render/libscnrender.a lang/libscnutil.a $(PNG_LIBS) $(EXR_LIBS) $(ASSIMP_LIBS) -lm
-render_libscnrender_a_SOURCES += render/mesh_import.c render/mesh_import.h \
+render_libscnrender_a_SOURCES += render/mesh_import.c render/mesh_import.h render/mesh_join.c render/mesh_join.h \
 	render/mesh_header.c render/mesh_header.h
 render_libscnrender_a_SOURCES += %D%/image.c %D%/image.h %D%/png.c %D%/exr.c %D%/ppm.c
 render_libscnrender_a_SOURCES += render/sampler.c render/sampler.h

@@ -16,6 +16,7 @@
 #include "memory.h"
 #include "mesh_header.h"
 #include "mesh_import.h"
+#include "mesh_join.h"
 #include "xalloc.h"
 
 /* assimp runs in two stages, because Debian's build keeps assimp's internal assertions on
@@ -28,27 +29,21 @@
  *
  * The rest, after we recompute mPrimitiveTypes from the faces: RemoveComponent drops what
  * we never use (removed_components), so that PreTransformVertices, which merges meshes by
- * material, merges them all into one, and JoinIdenticalVertices then joins corners by
- * position and normal alone: a UV seam or a material boundary does not split a smooth
- * surface, while corners with different normals stay apart and keep the file's hard
- * edges. SortByPType with AI_CONFIG_PP_SBP_REMOVE drops points and lines. None of these
- * fails on a valid scene that has a polygon. No GenNormals: the renderer computes
- * area-weighted normals itself when the scene asks for smooth. No FindDegenerates: it
- * drops degenerate triangles silently, and the caller warns about them. */
+ * material, merges them all into one. SortByPType with AI_CONFIG_PP_SBP_REMOVE drops
+ * points and lines. None of these fails on a valid scene that has a polygon. No
+ * GenNormals: the renderer computes area-weighted normals itself when the scene asks for
+ * smooth. No FindDegenerates: it drops degenerate triangles silently, and the caller
+ * warns about them. No JoinIdenticalVertices: mesh_join() joins the corners by position
+ * and normal alone once they are copied (a UV seam or a material boundary does not split
+ * a smooth surface, while corners with different normals stay apart and keep the file's
+ * hard edges), in a twentieth of the time. */
 static const unsigned read_flags = aiProcess_ValidateDataStructure;
 static const unsigned post_flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
-	aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices;
+	aiProcess_PreTransformVertices | aiProcess_SortByPType;
 
 static const int removed_components = aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
 	aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS | aiComponent_TEXTURES |
 	aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_MATERIALS;
-
-/* What a scene's normals are good for. */
-enum normals {
-	NORMALS_NONE,                  /* no triangle mesh has any */
-	NORMALS_USABLE,                /* every triangle corner has a finite nonzero one */
-	NORMALS_BROKEN                 /* some have, some lack, or some are zero or not finite */
-};
 
 /* The length of msg without its trailing blanks and full stop, since our messages end
  * without one; long messages are cut. */
@@ -115,14 +110,17 @@ static int set_primitive_types(const struct aiScene *sc, const char *path, char 
 	return polygons ? 0 : mesh_fail(err, errlen, "no triangles in '%s'", path);
 }
 
-/* Whether the second stage's memory fits the machine (memory.h). When it runs out,
- * aiApplyPostProcessing crashes as described at read_flags, so the bytes are counted
- * before: measured on a 1M-vertex, 2M-triangle binary PLY, whose second stage took
- * 650 MB over its first (the constants below round that up). If not, fills err and
+/* Whether the second stage's memory, and that of copying and joining what it gives,
+ * fits the machine (memory.h). When it runs out, aiApplyPostProcessing crashes as
+ * described at read_flags, so the bytes are counted before. Measured over the resident
+ * memory the first stage leaves: 46 MB for a 1M-vertex, 2M-triangle binary PLY, 58 MB
+ * for an OBJ of 480 000 quads with normals (1.9M vertices as assimp reads it). Our own
+ * arrays take at most 68 bytes a vertex (position, normal, mesh_join's tables) and 4 a
+ * corner; the constants below add assimp's copies and round up. If not, fills err and
  * returns false. */
 static bool second_stage_fits(const struct aiScene *sc, const char *path, char *err, size_t errlen)
 {
-	enum { PER_VERTEX = 200, PER_CORNER = 80 };
+	enum { PER_VERTEX = 80, PER_CORNER = 16 };
 	uint64_t vertices = 0, corners = 0;
 	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
 		const struct aiMesh *m = sc->mMeshes[i];
@@ -138,14 +136,12 @@ static bool second_stage_fits(const struct aiScene *sc, const char *path, char *
 	return false;
 }
 
-/* Imports path in the two stages described at read_flags; with drop_normals, the file's
- * normals are removed before vertices are joined. Returns the scene, or NULL with err
- * filled and *too_big set when it would need more memory than there is. */
-static const struct aiScene *import(const char *path, bool drop_normals, bool *too_big, char *err, size_t errlen)
+/* Imports path in the two stages described at read_flags. Returns the scene, or NULL
+ * with err filled and *too_big set when it would need more memory than there is. */
+static const struct aiScene *import(const char *path, bool *too_big, char *err, size_t errlen)
 {
 	struct aiPropertyStore *props = aiCreatePropertyStore();
-	aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS,
-	                           removed_components | (drop_normals ? aiComponent_NORMALS : 0));
+	aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS, removed_components);
 	aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
 	/* the importer keeps these properties for aiApplyPostProcessing */
 	const struct aiScene *sc = aiImportFileExWithProperties(path, read_flags, NULL, props);
@@ -183,25 +179,27 @@ static bool usable_normal(struct aiVector3D n)
 	return len2 > 0 && isfinite(len2);
 }
 
-/* Classifies the normals of sc's triangle meshes. An OBJ face without vn among faces with
- * it gives zero normals, and a PLY may carry junk; either way the renderer is better off
- * computing all of them than trusting some. */
-static enum normals classify_normals(const struct aiScene *sc)
+/* Whether every triangle corner of sc has a usable normal from the file. An OBJ face
+ * without vn among faces with it gives zero normals, and a PLY may carry junk; either
+ * way the renderer is better off computing all of them than trusting some, and the
+ * corners that differed only by their normals then join, so that smoothing runs across
+ * them. */
+static bool normals_usable(const struct aiScene *sc)
 {
-	bool some = false, all = true;
 	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
 		const struct aiMesh *m = sc->mMeshes[i];
 		if (!is_triangle_mesh(m))
 			continue;
-		if (!m->mNormals) {
-			all = false;
-			continue;
+		if (!m->mNormals)
+			return false;
+		for (unsigned j = 0; j < m->mNumFaces; j++) {
+			const struct aiFace *face = &m->mFaces[j];
+			for (unsigned k = 0; face->mNumIndices == 3 && k < 3; k++)
+				if (!usable_normal(m->mNormals[face->mIndices[k]]))
+					return false;
 		}
-		some = true;
-		for (unsigned j = 0; all && j < m->mNumVertices; j++)
-			all = usable_normal(m->mNormals[j]);
 	}
-	return !some ? NORMALS_NONE : all ? NORMALS_USABLE : NORMALS_BROKEN;
+	return true;
 }
 
 /* Copies the triangles of sc's triangle meshes into out, which is empty, with normals
@@ -262,18 +260,9 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 	if (mesh_header_check(path, err, errlen))
 		return 1;
 	bool too_big = false;
-	const struct aiScene *sc = import(path, false, &too_big, err, errlen);
+	const struct aiScene *sc = import(path, &too_big, err, errlen);
 	if (!sc)
 		return too_big ? ENOMEM : 1;
-	enum normals normals = classify_normals(sc);
-	if (normals == NORMALS_BROKEN) {
-		/* Import again without normals: the corners that differed only by their
-		 * normals then join, and smoothing runs across them. */
-		aiReleaseImport(sc);
-		if (!(sc = import(path, true, &too_big, err, errlen)))
-			return too_big ? ENOMEM : 1;
-		normals = NORMALS_NONE;
-	}
 
 	/* Indices are 32-bit. assimp's are per mesh, so only the sum can overflow. */
 	size_t nv = 0;
@@ -285,10 +274,11 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 		return mesh_fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
 				 (unsigned long)UINT32_MAX);
 	}
-	copy_scene(sc, normals == NORMALS_USABLE, out);
+	copy_scene(sc, normals_usable(sc), out);
 	aiReleaseImport(sc);
 	if (out->nfaces == 0)
 		return mesh_fail(err, errlen, "no triangles in '%s'", path);
+	mesh_join(out);
 	return 0;
 }
 
