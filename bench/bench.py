@@ -245,7 +245,7 @@ def embree(work):
         print("Embree comparison not run: bench/embree_compare did not build:\n" + make.stderr[-1500:])
         return
     print("raw traversal, scn's BVH against Embree 3 (rtcIntersect1, default build quality), the same "
-          "triangles and rays, median of 5 passes:")
+          "triangles and rays, median of 5 passes each, the two taking turns:")
     sys.stdout.flush()
     subprocess.run([os.path.join(TOP, "bench", "embree_compare"), os.path.join(work, "bunny.scn"),
                     os.path.join(work, "bunny-1m.scn")], check=True)
