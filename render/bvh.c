@@ -169,7 +169,6 @@ struct builder {
 	size_t task_size;        /* a subtree this small becomes a task; 0 while inside one */
 	struct task *tasks;
 	size_t ntasks, cap_tasks;
-	atomic_size_t next_task;
 };
 
 /* Float bounds that still contain the double ones, with room for x's own rounding
@@ -376,35 +375,52 @@ static struct child build(struct builder *b, uint32_t parent, uint32_t c, uint32
 	return ch;
 }
 
-static void *worker(void *arg)
+/* Runs fn(ctx, i) for each i in [0, n) on up to as many threads as there are processors
+ * (the calling one among them), each thread taking the next i: what fn does depends on i
+ * alone, never on the thread that runs it. */
+struct parallel {
+	void (*fn)(void *ctx, size_t i);
+	void *ctx;
+	size_t n;
+	atomic_size_t next;
+};
+
+static void *parallel_worker(void *arg)
 {
-	struct builder *b = arg;
-	for (;;) {
-		size_t i = atomic_fetch_add(&b->next_task, 1);
-		if (i >= b->ntasks)
-			return NULL;
-		const struct task *t = &b->tasks[i];
-		struct child ch = build(b, t->parent, t->c, t->first, t->n, t->depth, t->bounds);
-		if (t->parent == NO_PARENT)
-			b->root = ch;
-		else
-			b->bin[t->parent].kid[t->c] = ch;
-	}
+	struct parallel *p = arg;
+	for (size_t i; (i = atomic_fetch_add(&p->next, 1)) < p->n;)
+		p->fn(p->ctx, i);
+	return NULL;
 }
 
-/* Runs the tasks on up to threads threads (the calling one among them). */
-static void run_tasks(struct builder *b, int threads)
+static void parallel_for(size_t n, void (*fn)(void *ctx, size_t i), void *ctx)
 {
-	if (threads > (int)b->ntasks)
-		threads = (int)b->ntasks;
-	pthread_t *tid = xcalloc((size_t)(threads > 1 ? threads - 1 : 1), sizeof *tid);
-	int started = 0;
-	while (started < threads - 1 && pthread_create(&tid[started], NULL, worker, b) == 0)
+	struct parallel p = { .fn = fn, .ctx = ctx, .n = n };
+	atomic_init(&p.next, 0);
+	long cores = sysconf(_SC_NPROCESSORS_ONLN);
+	size_t threads = cores > 1 ? (size_t)cores : 1;
+	if (threads > n)
+		threads = n;
+	pthread_t *tid = xcalloc(threads > 1 ? threads - 1 : 1, sizeof *tid);
+	size_t started = 0;
+	while (started + 1 < threads && pthread_create(&tid[started], NULL, parallel_worker, &p) == 0)
 		started++;
-	worker(b); /* if no thread could start, this one does it all */
-	for (int i = 0; i < started; i++)
+	parallel_worker(&p); /* if no thread could start, this one does it all */
+	for (size_t i = 0; i < started; i++)
 		pthread_join(tid[i], NULL);
 	free(tid);
+}
+
+/* Builds task i and puts it in the slot its parent left for it. */
+static void run_task(void *ctx, size_t i)
+{
+	struct builder *b = ctx;
+	const struct task *t = &b->tasks[i];
+	struct child ch = build(b, t->parent, t->c, t->first, t->n, t->depth, t->bounds);
+	if (t->parent == NO_PARENT)
+		b->root = ch;
+	else
+		b->bin[t->parent].kid[t->c] = ch;
 }
 
 /* The area of a child's box (vbox_area's), for choosing which child to open; a NaN from
@@ -457,12 +473,27 @@ static int gather(const struct bin_node *bin, uint32_t node, struct child out[WI
 	return n;
 }
 
+/* A subtree of the wide tree that a thread collapses on its own: below the binary child
+ * ch, at wide level `level`; its nodes go to [offset, offset + size). */
+struct wide_job {
+	struct child ch;
+	int level;
+	uint32_t offset, size;
+	size_t boxes;
+	int depth;
+};
+
 struct collapse {
 	const struct bin_node *bin;
 	struct bvh_node *out;      /* NULL: only count the nodes */
-	uint32_t next;             /* nodes made so far */
+	uint32_t next;             /* nodes made so far (in out, where it starts) */
 	size_t boxes;
 	int depth;
+	/* the top of the tree, when the rest goes to jobs: an interior child at job_level is
+	 * a job, found by the counting pass and placed by the writing pass, in preorder */
+	int job_level;             /* 0: no jobs */
+	struct wide_job *jobs;
+	size_t njobs, cap_jobs, placed;
 };
 
 /* Turns the binary subtree below interior child ch into wide nodes, in preorder;
@@ -472,6 +503,19 @@ static struct child collapse(struct collapse *cl, struct child ch, int level)
 {
 	if (ch.count)
 		return ch;
+	if (cl->job_level && level == cl->job_level) {
+		if (!cl->out) {
+			xgrow((void **)&cl->jobs, &cl->cap_jobs, cl->njobs + 1, sizeof *cl->jobs);
+			cl->jobs[cl->njobs++] = (struct wide_job){ .ch = ch, .level = level };
+			return ch;
+		}
+		/* its subtree, counted by then, takes the next size nodes, its root first */
+		struct wide_job *j = &cl->jobs[cl->placed++];
+		j->offset = cl->next;
+		cl->next += j->size;
+		ch.index = j->offset;
+		return ch;
+	}
 	if (level > cl->depth)
 		cl->depth = level;
 	struct child kid[WIDTH];
@@ -493,20 +537,59 @@ static struct child collapse(struct collapse *cl, struct child ch, int level)
 	return ch;
 }
 
-/* The wide tree of the binary one, which it frees: a pass to count, the array aligned
- * to cache lines, a pass to fill it. */
-static void make_wide(struct bvh *bvh, struct bin_node *bin)
+struct wide_jobs {
+	const struct bin_node *bin;
+	struct bvh_node *out;
+	struct wide_job *jobs;
+};
+
+static void count_job(void *ctx, size_t i)
 {
-	struct collapse cl = { .bin = bin };
+	struct wide_jobs *w = ctx;
+	struct wide_job *j = &w->jobs[i];
+	struct collapse cl = { .bin = w->bin };
+	collapse(&cl, j->ch, j->level);
+	j->size = cl.next;
+	j->boxes = cl.boxes;
+	j->depth = cl.depth;
+}
+
+static void write_job(void *ctx, size_t i)
+{
+	struct wide_jobs *w = ctx;
+	const struct wide_job *j = &w->jobs[i];
+	struct collapse cl = { .bin = w->bin, .out = w->out, .next = j->offset };
+	collapse(&cl, j->ch, j->level);
+}
+
+/* The wide tree of the binary one, which it frees: a pass to count, the array aligned
+ * to cache lines, a pass to fill it. With parallel, the top two levels are collapsed on
+ * this thread and the subtrees below them on all threads, in both passes (each waits on
+ * its loads of binary nodes more than on anything else); the layout is the same. */
+static void make_wide(struct bvh *bvh, struct bin_node *bin, bool parallel)
+{
+	struct collapse cl = { .bin = bin, .job_level = parallel ? 2 : 0 };
 	collapse(&cl, bvh->root, 0);
-	bvh->nnodes = cl.next;
-	bvh->nboxes = cl.boxes + 1;
-	bvh->depth = cl.depth;
-	if (cl.next) {
-		bvh->nodes = xaligned_alloc(64, cl.next * sizeof *bvh->nodes);
-		cl = (struct collapse){ .bin = bin, .out = bvh->nodes };
-		bvh->root = collapse(&cl, bvh->root, 0);
+	struct wide_jobs w = { bin, NULL, cl.jobs };
+	parallel_for(cl.njobs, count_job, &w);
+	size_t total = cl.next, boxes = cl.boxes;
+	int depth = cl.depth;
+	for (size_t i = 0; i < cl.njobs; i++) {
+		total += cl.jobs[i].size;
+		boxes += cl.jobs[i].boxes;
+		depth = cl.jobs[i].depth > depth ? cl.jobs[i].depth : depth;
 	}
+	bvh->nnodes = total;
+	bvh->nboxes = boxes + 1;
+	bvh->depth = depth;
+	if (total) {
+		w.out = bvh->nodes = xaligned_alloc(64, total * sizeof *bvh->nodes);
+		cl.out = bvh->nodes;
+		cl.next = 0;
+		bvh->root = collapse(&cl, bvh->root, 0);
+		parallel_for(cl.njobs, write_job, &w);
+	}
+	free(cl.jobs);
 	free(bin);
 }
 
@@ -550,13 +633,11 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	b.task_size = task > MIN_TASK ? task : MIN_TASK;
 	b.root = build(&b, NO_PARENT, 0, 0, (uint32_t)n, 0, root);
 	b.task_size = 0;
-	long cores = sysconf(_SC_NPROCESSORS_ONLN);
-	atomic_init(&b.next_task, 0);
-	run_tasks(&b, cores > 0 ? (int)cores : 1);
+	parallel_for(b.ntasks, run_task, &b);
 	free(b.tasks);
 	free(b.refs);
 	bvh->root = b.root;
-	make_wide(bvh, b.bin);
+	make_wide(bvh, b.bin, b.ntasks > 1);
 	return bvh;
 }
 
