@@ -9,8 +9,9 @@
  *
  * The build splits the top of the tree on one thread and hands the subtrees below a size
  * fixed by the primitive count to worker threads, each node going to a slot fixed by
- * where its split falls: the tree and its layout depend on the scene alone, never on
- * the thread count or on which thread finished first. */
+ * where its split falls; the collapse into wide nodes hands out subtrees the same way.
+ * The tree and its layout depend on the scene alone, never on the thread count or on
+ * which thread finished first. */
 #include "bvh.h"
 
 #include <float.h>
@@ -236,7 +237,7 @@ struct split {
 	struct binning bn;
 };
 
-/* Finds the cheapest binned SAH split of refs[0, n) whose centroids span clo..chi, all
+/* Finds the cheapest binned SAH split of refs[0, n) whose centroids span cbox, all
  * three axes binned in one pass, in as many bins as there are references up to NBINS
  * (the sweep over the bins would cost small nodes more than the binning). axis -1 when
  * keeping a leaf is cheaper. */
