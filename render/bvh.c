@@ -30,6 +30,7 @@ enum {
 	MAX_DEPTH = 96,    /* below this every node is a leaf; traversal stacks are sized by it */
 	MIN_TASK = 4096,   /* primitives in a subtree worth a thread of its own */
 	TASKS_PER_TREE = 64, /* subtrees the top split aims for, so that threads share the work evenly */
+	REF_CHUNKS = 64,   /* pieces the making of the build records is cut into, for the same reason */
 };
 
 /* Four floats, with SSE where there is SSE (every x86-64) and GCC's generic vectors
@@ -594,6 +595,50 @@ static void make_wide(struct bvh *bvh, struct bin_node *bin, bool parallel)
 	free(bin);
 }
 
+/* The build record of primitive k of sc, spheres first, then triangles. */
+static void make_ref(const struct scene *sc, size_t k, struct build_ref *r)
+{
+	if (k < sc->nspheres) {
+		const struct sphere *s = &sc->spheres[k];
+		for (int a = 0; a < 3; a++) {
+			double c = vget(s->center, a);
+			r->lo[a] = float_below(c - s->radius);
+			r->hi[a] = float_above(c + s->radius);
+			r->centroid[a] = (float)c;
+		}
+		r->prim = prim_id(PRIM_SPHERE, (uint32_t)k);
+		return;
+	}
+	const struct triangle *t = &sc->triangles[k - sc->nspheres];
+	struct vec3 p0 = t->p[0], p1 = t->p[1], p2 = t->p[2];
+	struct vec3 lo = vmin(p0, vmin(p1, p2)), hi = vmax(p0, vmax(p1, p2));
+	for (int a = 0; a < 3; a++) {
+		r->lo[a] = float_below(vget(lo, a));
+		r->hi[a] = float_above(vget(hi, a));
+		r->centroid[a] = (float)(0.5 * (vget(lo, a) + vget(hi, a)));
+	}
+	r->prim = prim_id(PRIM_TRIANGLE, (uint32_t)(k - sc->nspheres));
+}
+
+/* The records of the primitives, made chunk by chunk, each chunk's bounds beside. */
+struct ref_chunks {
+	const struct scene *sc;
+	struct build_ref *refs;
+	size_t n, nchunks;
+	struct bounds *bounds;
+};
+
+static void make_chunk(void *ctx, size_t c)
+{
+	struct ref_chunks *rc = ctx;
+	struct bounds bd = { vbox_empty(), vbox_empty() };
+	for (size_t k = rc->n * c / rc->nchunks; k < rc->n * (c + 1) / rc->nchunks; k++) {
+		make_ref(rc->sc, k, &rc->refs[k]);
+		bounds_add(&bd, &rc->refs[k]);
+	}
+	rc->bounds[c] = bd;
+}
+
 struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 {
 	struct bvh *bvh = xcalloc(1, sizeof *bvh);
@@ -604,30 +649,14 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	struct builder b = { .brute = kind == ACCEL_NONE };
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
-	size_t k = 0;
+	/* the records in chunks, on all threads where the build will use them */
+	struct bounds chunk_bounds[REF_CHUNKS];
+	struct ref_chunks rc = { sc, b.refs, n, n > MIN_TASK ? REF_CHUNKS : 1, chunk_bounds };
+	parallel_for(rc.nchunks, make_chunk, &rc);
 	struct bounds root = { vbox_empty(), vbox_empty() };
-	for (size_t i = 0; i < sc->nspheres; i++, k++) {
-		const struct sphere *s = &sc->spheres[i];
-		for (int a = 0; a < 3; a++) {
-			double c = vget(s->center, a);
-			b.refs[k].lo[a] = float_below(c - s->radius);
-			b.refs[k].hi[a] = float_above(c + s->radius);
-			b.refs[k].centroid[a] = (float)c;
-		}
-		b.refs[k].prim = prim_id(PRIM_SPHERE, (uint32_t)i);
-		bounds_add(&root, &b.refs[k]);
-	}
-	for (size_t i = 0; i < sc->ntriangles; i++, k++) {
-		const struct triangle *t = &sc->triangles[i];
-		struct vec3 p0 = t->p[0], p1 = t->p[1], p2 = t->p[2];
-		struct vec3 lo = vmin(p0, vmin(p1, p2)), hi = vmax(p0, vmax(p1, p2));
-		for (int a = 0; a < 3; a++) {
-			b.refs[k].lo[a] = float_below(vget(lo, a));
-			b.refs[k].hi[a] = float_above(vget(hi, a));
-			b.refs[k].centroid[a] = (float)(0.5 * (vget(lo, a) + vget(hi, a)));
-		}
-		b.refs[k].prim = prim_id(PRIM_TRIANGLE, (uint32_t)i);
-		bounds_add(&root, &b.refs[k]);
+	for (size_t c = 0; c < rc.nchunks; c++) {
+		vbox_add(&root.box, chunk_bounds[c].box.lo, chunk_bounds[c].box.hi);
+		vbox_add(&root.cbox, chunk_bounds[c].cbox.lo, chunk_bounds[c].cbox.hi);
 	}
 	b.bin = xmalloc((n > 1 ? n - 1 : 1) * sizeof *b.bin);
 	size_t task = n / TASKS_PER_TREE;
