@@ -595,29 +595,20 @@ static void make_wide(struct bvh *bvh, struct bin_node *bin, bool parallel)
 	free(bin);
 }
 
-/* The build record of primitive k of sc, spheres first, then triangles. */
+/* The build record of primitive k of sc (nth_prim's numbering). */
 static void make_ref(const struct scene *sc, size_t k, struct build_ref *r)
 {
-	if (k < sc->nspheres) {
-		const struct sphere *s = &sc->spheres[k];
-		for (int a = 0; a < 3; a++) {
-			double c = vget(s->center, a);
-			r->lo[a] = float_below(c - s->radius);
-			r->hi[a] = float_above(c + s->radius);
-			r->centroid[a] = (float)c;
-		}
-		r->prim = prim_id(PRIM_SPHERE, (uint32_t)k);
-		return;
-	}
-	const struct triangle *t = &sc->triangles[k - sc->nspheres];
-	struct vec3 p0 = t->p[0], p1 = t->p[1], p2 = t->p[2];
-	struct vec3 lo = vmin(p0, vmin(p1, p2)), hi = vmax(p0, vmax(p1, p2));
+	struct vec3 lo, hi;
+	r->prim = nth_prim(sc, k);
+	prim_bounds(sc, r->prim, &lo, &hi);
+	bool sphere = prim_kind(r->prim) == PRIM_SPHERE;
 	for (int a = 0; a < 3; a++) {
 		r->lo[a] = float_below(vget(lo, a));
 		r->hi[a] = float_above(vget(hi, a));
-		r->centroid[a] = (float)(0.5 * (vget(lo, a) + vget(hi, a)));
+		/* the centre of the exact bounds: a sphere's own, which its rounded bounds
+		 * would only approach */
+		r->centroid[a] = (float)(sphere ? vget(sc->spheres[k].center, a) : 0.5 * (vget(lo, a) + vget(hi, a)));
 	}
-	r->prim = prim_id(PRIM_TRIANGLE, (uint32_t)(k - sc->nspheres));
 }
 
 /* The records of the primitives, made chunk by chunk, each chunk's bounds beside. */

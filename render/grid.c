@@ -56,17 +56,7 @@ static inline size_t cell_index(const struct grid *g, const int c[3])
 static struct box prim_box(const struct scene *sc, uint32_t prim)
 {
 	struct vec3 lo, hi;
-	uint32_t i = prim_index(prim);
-	if (prim_kind(prim) == PRIM_SPHERE) {
-		const struct sphere *s = &sc->spheres[i];
-		lo = vsub(s->center, v3s(s->radius));
-		hi = vadd(s->center, v3s(s->radius));
-	} else {
-		const struct triangle *t = &sc->triangles[i];
-		struct vec3 a = t->p[0], b = t->p[1], c = t->p[2];
-		lo = vmin(a, vmin(b, c));
-		hi = vmax(a, vmax(b, c));
-	}
+	prim_bounds(sc, prim, &lo, &hi);
 	/* centre -+ radius is rounded: one ulp outward holds the exact box */
 	struct box bx;
 	for (int k = 0; k < 3; k++) {
@@ -74,12 +64,6 @@ static struct box prim_box(const struct scene *sc, uint32_t prim)
 		bx.hi[k] = nextafter(vget(hi, k), INFINITY);
 	}
 	return bx;
-}
-
-static uint32_t nth_prim(const struct scene *sc, size_t i)
-{
-	return i < sc->nspheres ? prim_id(PRIM_SPHERE, (uint32_t)i)
-	                        : prim_id(PRIM_TRIANGLE, (uint32_t)(i - sc->nspheres));
 }
 
 /* Sets the resolution for cells_per_unit cells per unit of length along each side. */

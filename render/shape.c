@@ -61,6 +61,21 @@ int ray_sphere_crossings(const struct sphere *s, const struct ray *r, double tma
 	return n;
 }
 
+void prim_bounds(const struct scene *sc, uint32_t prim, struct vec3 *lo, struct vec3 *hi)
+{
+	uint32_t i = prim_index(prim);
+	if (prim_kind(prim) == PRIM_SPHERE) {
+		const struct sphere *s = &sc->spheres[i];
+		*lo = vsub(s->center, v3s(s->radius));
+		*hi = vadd(s->center, v3s(s->radius));
+	} else {
+		const struct triangle *t = &sc->triangles[i];
+		struct vec3 a = t->p[0], b = t->p[1], c = t->p[2];
+		*lo = vmin(a, vmin(b, c));
+		*hi = vmax(a, vmax(b, c));
+	}
+}
+
 bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h)
 {
 	double denom = vdot(pl->normal, r->d);

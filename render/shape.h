@@ -51,6 +51,19 @@ bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h
  * shadow filter, which counts each crossing. */
 int ray_sphere_crossings(const struct sphere *s, const struct ray *r, double tmax, double t[2]);
 
+/* The id of the i-th sphere or triangle of sc, spheres first: the order accelerators
+ * number them in while they build. */
+static inline uint32_t nth_prim(const struct scene *sc, size_t i)
+{
+	return i < sc->nspheres ? prim_id(PRIM_SPHERE, (uint32_t)i)
+	                        : prim_id(PRIM_TRIANGLE, (uint32_t)(i - sc->nspheres));
+}
+
+/* The bounds of a sphere (centre -+ radius) or triangle (its vertices' least and greatest
+ * coordinates) by id, in double; a sphere's are rounded, so an accelerator widens them
+ * outward. */
+void prim_bounds(const struct scene *sc, uint32_t prim, struct vec3 *lo, struct vec3 *hi);
+
 /* The closest-hit test of one sphere or triangle by id; sets h->prim when it hits. */
 static inline bool prim_intersect(const struct scene *sc, uint32_t prim, const struct ray *r, struct hit *h)
 {
