@@ -55,6 +55,12 @@ static inline v4f v4min(v4f a, v4f b) { return _mm_min_ps(a, b); }
 static inline int v4le(v4f a, v4f b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
 /* toward zero, lane by lane */
 static inline void v4trunc(v4f a, int out[4]) { _mm_storeu_si128((__m128i *)out, _mm_cvttps_epi32(a)); }
+/* m ? a : b, lane by lane, for m all ones or all zeros in each lane */
+static inline v4f v4pick(v4f m, v4f a, v4f b) { return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)); }
+/* all ones in the lanes whose sign bit is set (-0 too), else zeros */
+static inline v4f v4signs(v4f a) { return _mm_castsi128_ps(_mm_srai_epi32(_mm_castps_si128(a), 31)); }
+/* bit c set when a[c]'s sign bit is */
+static inline int v4signbits(v4f a) { return _mm_movemask_ps(a); }
 #else
 typedef float v4f __attribute__((vector_size(16)));
 typedef int v4i __attribute__((vector_size(16)));
@@ -75,6 +81,13 @@ static inline void v4trunc(v4f a, int out[4])
 {
 	for (int i = 0; i < 4; i++)
 		out[i] = (int)a[i];
+}
+static inline v4f v4pick(v4f m, v4f a, v4f b) { return (v4f)(((v4i)m & (v4i)a) | (~(v4i)m & (v4i)b)); }
+static inline v4f v4signs(v4f a) { return (v4f)((v4i)a >> 31); }
+static inline int v4signbits(v4f a)
+{
+	v4i m = (v4i)a >> 31;
+	return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
 }
 #endif
 
@@ -722,9 +735,24 @@ struct bvh_shape bvh_shape(const struct bvh *b)
 #ifdef __AVX__
 typedef __m256 vray;       /* one value of the ray in every lane of a node test */
 static inline vray vray_set(float x) { return _mm256_set1_ps(x); }
+/* out[k]: lane k of a in every lane */
+static inline void vray_lanes(v4f a, vray out[3])
+{
+	__m256 aa = _mm256_insertf128_ps(_mm256_castps128_ps256(a), a, 1);
+	out[0] = _mm256_permute_ps(aa, 0x00);
+	out[1] = _mm256_permute_ps(aa, 0x55);
+	out[2] = _mm256_permute_ps(aa, 0xaa);
+}
 #else
 typedef v4f vray;
 static inline vray vray_set(float x) { return v4set(x); }
+static inline void vray_lanes(v4f a, vray out[3])
+{
+	float f[4];
+	v4store(f, a);
+	for (int k = 0; k < 3; k++)
+		out[k] = v4set(f[k]);
+}
 #endif
 
 struct box_ray {
@@ -744,24 +772,38 @@ struct box_ray {
  * branches, which matters with nine such values per ray; a few ulps wider is harmless. */
 #define ROUND_MARGIN 0x1p-22
 
+/* The three axes at once (lane 3 is padding: d 1, o 0), the doubles in GCC's generic
+ * vectors (AVX or SSE2 where there is one): the per-ray set-up ran to a hundred and
+ * thirty scalar instructions, as much as a node test or two. The clamps to the float
+ * range come after the rounding to float, which gives the same values: a double above
+ * FLT_MAX rounds to FLT_MAX or to inf, and one below never rounds past it. */
 static void box_ray_init(const struct ray *r, struct box_ray *s)
 {
+	typedef double v4d __attribute__((vector_size(32)));
+	typedef long long v4l __attribute__((vector_size(32)));
+	const v4l abs_mask = ~((v4l){ 1, 1, 1, 1 } << 63);
+	v4d d = { r->d.x, r->d.y, r->d.z, 1 }, o = { r->o.x, r->o.y, r->o.z, 0 };
+	v4d inv = 1 / d;
+	v4d m = (v4d)((v4l)o & abs_mask) * ROUND_MARGIN + FLT_TRUE_MIN;
+	v4f o_down = v4min(__builtin_convertvector(o - m, v4f), v4set(FLT_MAX));
+	v4f o_up = v4max(__builtin_convertvector(o + m, v4f), v4set(-FLT_MAX));
+	/* near and far by the sign bit of d (-0 counts as negative), not by comparing the
+	 * two distances: with a -0 component and the origin on a face one of them is NaN */
+	v4f d_f = __builtin_convertvector(d, v4f), neg = v4signs(d_f);
+	v4f inv_f = __builtin_convertvector(inv, v4f);
+	/* a zero component keeps a finite |1/d| on the entry side, with the sign of 1/d */
+	v4f inv_in = v4min(__builtin_convertvector((v4d)((v4l)inv & abs_mask) * (1 - ROUND_MARGIN), v4f),
+	                   v4set(FLT_MAX));
+	inv_in = v4pick(v4signs(inv_f), v4sub(v4set(0), inv_in), inv_in);
+	vray_lanes(v4pick(neg, o_down, o_up), s->o_near);
+	vray_lanes(v4pick(neg, o_up, o_down), s->o_far);
+	vray_lanes(inv_in, s->inv_near);
+	vray_lanes(__builtin_convertvector(inv * (FAR_WIDEN + ROUND_MARGIN), v4f), s->inv_far);
+	int bits = v4signbits(d_f);
+#pragma GCC unroll 3 /* GCC keeps these short loops rolled at -O2 */
 	for (int k = 0; k < 3; k++) {
-		double d = vget(r->d, k), o = vget(r->o, k), inv = 1 / d;
-		double m = fabs(o) * ROUND_MARGIN + FLT_TRUE_MIN;
-		/* clamped, as a finite value beyond float range would round to inf either way */
-		float o_down = (float)(o - m < FLT_MAX ? o - m : FLT_MAX);
-		float o_up = (float)(o + m > -FLT_MAX ? o + m : -FLT_MAX);
-		/* by the sign of d, not by comparing the two distances: with a -0 component and
-		 * the origin on a face one of them is NaN */
-		bool neg = signbit(d);
-		s->o_near[k] = vray_set(neg ? o_down : o_up);
-		s->o_far[k] = vray_set(neg ? o_up : o_down);
-		double inv_in = fabs(inv) * (1 - ROUND_MARGIN);
-		s->inv_near[k] = vray_set((float)copysign(inv_in < FLT_MAX ? inv_in : FLT_MAX, inv));
-		s->inv_far[k] = vray_set((float)(inv * (FAR_WIDEN + ROUND_MARGIN)));
-		s->enter[k] = k + 3 * neg;
-		s->leave[k] = k + 3 * !neg;
+		s->enter[k] = k + 3 * (bits >> k & 1);
+		s->leave[k] = k + 3 * (~bits >> k & 1);
 	}
 }
 
@@ -780,6 +822,7 @@ static inline float far_bound(double tmax)
 static inline int node_hit(const struct bvh_node *n, const struct box_ray *s, vray tmax, float t_enter[WIDTH])
 {
 	__m256 tnear = _mm256_setzero_ps(), tfar = tmax;
+#pragma GCC unroll 3
 	for (int k = 0; k < 3; k++) {
 		__m256 near = _mm256_sub_ps(_mm256_load_ps(n->box[s->enter[k]]), s->o_near[k]);
 		__m256 far = _mm256_sub_ps(_mm256_load_ps(n->box[s->leave[k]]), s->o_far[k]);
@@ -822,7 +865,7 @@ typedef bool leaf_fn(const struct bvh *b, uint32_t first, uint32_t count, void *
  * the children hit are visited in order of their entry distance, which lets a
  * closest-hit query lower *tmax early; a shadow query, whose tmax stays, takes them as
  * they come. The root's own box is not tested: its children's are, in the first node. */
-static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, leaf_fn *visit, void *query,
+static inline __attribute__((always_inline)) void walk(const struct bvh *b, const struct ray *r, double *tmax, leaf_fn *visit, void *query,
                         bool nearest_first)
 {
 	struct box_ray s;
@@ -879,6 +922,7 @@ static inline void walk(const struct bvh *b, const struct ray *r, double *tmax, 
 struct closest_query {
 	const struct scene *sc;
 	const struct ray *r;
+	struct tri_ray tr;
 	struct hit *h;
 	bool hit;
 };
@@ -887,15 +931,16 @@ static bool closest_leaf(const struct bvh *b, uint32_t first, uint32_t count, vo
 {
 	struct closest_query *q = query;
 	for (uint32_t i = 0; i < count; i++)
-		q->hit |= prim_intersect(q->sc, b->prims[first + i], q->r, q->h);
+		q->hit |= prim_intersect(q->sc, b->prims[first + i], q->r, &q->tr, q->h);
 	*tmax = q->h->t;
 	return false;
 }
 
 bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h)
 {
-	struct closest_query q = { sc, r, h, planes_intersect(sc, r, h) };
+	struct closest_query q = { .sc = sc, .r = r, .h = h, .hit = planes_intersect(sc, r, h) };
 	if (b->nprims) {
+		tri_ray_for(sc, r, &q.tr);
 		double tmax = h->t;
 		walk(b, r, &tmax, closest_leaf, &q, true);
 	}
@@ -905,6 +950,7 @@ bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray
 struct shadow_query {
 	const struct scene *sc;
 	const struct ray *r;
+	struct tri_ray tr;
 	struct vec3 pass;
 };
 
@@ -912,7 +958,7 @@ static bool shadow_leaf(const struct bvh *b, uint32_t first, uint32_t count, voi
 {
 	struct shadow_query *q = query;
 	for (uint32_t i = 0; i < count; i++) {
-		q->pass = prim_filter(q->sc, b->prims[first + i], q->r, *tmax, q->pass);
+		q->pass = prim_filter(q->sc, b->prims[first + i], q->r, &q->tr, *tmax, q->pass);
 		if (vzero(q->pass))
 			return true;
 	}
@@ -921,8 +967,10 @@ static bool shadow_leaf(const struct bvh *b, uint32_t first, uint32_t count, voi
 
 struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax)
 {
-	struct shadow_query q = { sc, r, planes_filter(sc, r, tmax) };
-	if (!vzero(q.pass) && b->nprims)
-		walk(b, r, &tmax, shadow_leaf, &q, false);
+	struct shadow_query q = { .sc = sc, .r = r, .pass = planes_filter(sc, r, tmax) };
+	if (vzero(q.pass) || !b->nprims)
+		return q.pass;
+	tri_ray_for(sc, r, &q.tr);
+	walk(b, r, &tmax, shadow_leaf, &q, false);
 	return q.pass;
 }

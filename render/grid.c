@@ -317,13 +317,15 @@ bool grid_intersect(const struct grid *g, const struct scene *sc, const struct r
 	struct walk w;
 	if (!g->refs || !walk_start(g, r, h->t, &w))
 		return hit;
+	struct tri_ray tr;
+	tri_ray_for(sc, r, &tr);
 	size_t cells[4];
 	int n;
 	/* a primitive in several cells is tested in each: cheaper than remembering it */
 	while ((n = walk_next(g, &w, h->t, cells)) > 0)
 		for (int i = 0; i < n; i++)
 			for (uint32_t j = g->start[cells[i]]; j < g->start[cells[i] + 1]; j++)
-				hit |= prim_intersect(sc, g->refs[j] & ~MULTI_CELL, r, h);
+				hit |= prim_intersect(sc, g->refs[j] & ~MULTI_CELL, r, &tr, h);
 	return hit;
 }
 
@@ -366,8 +368,8 @@ static void mailbox_clear(void)
 }
 
 /* The filter of the grid's primitives along r; false when the mailbox overflowed. */
-static bool filter_walk(const struct grid *g, const struct scene *sc, const struct ray *r, double tmax,
-                        struct vec3 *pass)
+static bool filter_walk(const struct grid *g, const struct scene *sc, const struct ray *r,
+                        const struct tri_ray *tr, double tmax, struct vec3 *pass)
 {
 	struct walk w;
 	if (!walk_start(g, r, tmax, &w))
@@ -385,7 +387,7 @@ static bool filter_walk(const struct grid *g, const struct scene *sc, const stru
 					if (!fresh)
 						continue;
 				}
-				*pass = prim_filter(sc, ref & ~MULTI_CELL, r, tmax, *pass);
+				*pass = prim_filter(sc, ref & ~MULTI_CELL, r, tr, tmax, *pass);
 				if (vzero(*pass))
 					return true;
 			}
@@ -398,13 +400,15 @@ struct vec3 grid_transmittance(const struct grid *g, const struct scene *sc, con
 	if (vzero(pass) || !g->refs)
 		return pass;
 	struct vec3 planes = pass;
-	bool complete = filter_walk(g, sc, r, tmax, &pass);
+	struct tri_ray tr;
+	tri_ray_for(sc, r, &tr);
+	bool complete = filter_walk(g, sc, r, &tr, tmax, &pass);
 	mailbox_clear();
 	if (complete)
 		return pass;
 	/* more distinct primitives than the mailbox holds: every primitive, once each */
 	pass = planes;
 	for (size_t i = 0; i < sc->nspheres + sc->ntriangles && !vzero(pass); i++)
-		pass = prim_filter(sc, nth_prim(sc, i), r, tmax, pass);
+		pass = prim_filter(sc, nth_prim(sc, i), r, &tr, tmax, pass);
 	return pass;
 }

@@ -47,6 +47,25 @@ bool ray_sphere(const struct sphere *s, const struct ray *r, struct hit *h);
 bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h);
 bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h);
 
+/* A ray as the watertight triangle test takes it (Woop et al. section 3): the axes
+ * permuted so that z is the direction's largest and the shear that turns the ray into
+ * the +z axis, worked out once a ray rather than once a triangle (three divisions, and
+ * branches that incoherent rays mispredict). */
+struct tri_ray {
+	struct vec3 o;
+	int k[3];                      /* the permutation: x, y, z are axes k[0], k[1], k[2] */
+	double sx, sy, sz;
+};
+void tri_ray_init(const struct ray *r, struct tri_ray *tr);
+/* tri_ray_init() where sc has triangles, the only case where tr is read */
+static inline void tri_ray_for(const struct scene *sc, const struct ray *r, struct tri_ray *tr)
+{
+	if (sc->ntriangles)
+		tri_ray_init(r, tr);
+}
+/* ray_triangle() of the ray tr was made from */
+bool tri_ray_hit(const struct tri_ray *tr, const struct triangle *tri, struct hit *h);
+
 /* Every t in (0, tmax) at which r crosses the sphere (0, 1 or 2 values); for the
  * shadow filter, which counts each crossing. */
 int ray_sphere_crossings(const struct sphere *s, const struct ray *r, double tmax, double t[2]);
@@ -64,12 +83,14 @@ static inline uint32_t nth_prim(const struct scene *sc, size_t i)
  * outward. */
 void prim_bounds(const struct scene *sc, uint32_t prim, struct vec3 *lo, struct vec3 *hi);
 
-/* The closest-hit test of one sphere or triangle by id; sets h->prim when it hits. */
-static inline bool prim_intersect(const struct scene *sc, uint32_t prim, const struct ray *r, struct hit *h)
+/* The closest-hit test of one sphere or triangle by id; sets h->prim when it hits. tr:
+ * r made by tri_ray_init(), wherever the scene has triangles. */
+static inline bool prim_intersect(const struct scene *sc, uint32_t prim, const struct ray *r,
+                                  const struct tri_ray *tr, struct hit *h)
 {
 	uint32_t i = prim_index(prim);
 	bool hit = prim_kind(prim) == PRIM_SPHERE ? ray_sphere(&sc->spheres[i], r, h)
-	                                          : ray_triangle(&sc->triangles[i], r, h);
+	                                          : tri_ray_hit(tr, &sc->triangles[i], h);
 	if (hit)
 		h->prim = prim;
 	return hit;
@@ -81,9 +102,9 @@ static inline struct vec3 transmit_of(const struct scene *sc, uint32_t surface)
 }
 
 /* pass times the k_t of one sphere or triangle (by id) for each time r crosses it in
- * (0, tmax): the shadow filter's step. */
-static inline struct vec3 prim_filter(const struct scene *sc, uint32_t prim, const struct ray *r, double tmax,
-                                      struct vec3 pass)
+ * (0, tmax): the shadow filter's step. tr as for prim_intersect(). */
+static inline struct vec3 prim_filter(const struct scene *sc, uint32_t prim, const struct ray *r,
+                                      const struct tri_ray *tr, double tmax, struct vec3 pass)
 {
 	uint32_t k = prim_index(prim);
 	if (prim_kind(prim) == PRIM_SPHERE) {
@@ -93,7 +114,7 @@ static inline struct vec3 prim_filter(const struct scene *sc, uint32_t prim, con
 			pass = vmul(pass, transmit_of(sc, sc->spheres[k].surface));
 	} else {
 		struct hit h = { .t = tmax };
-		if (ray_triangle(&sc->triangles[k], r, &h))
+		if (tri_ray_hit(tr, &sc->triangles[k], &h))
 			pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
 	}
 	return pass;
