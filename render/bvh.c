@@ -892,7 +892,8 @@ static inline __attribute__((always_inline)) void walk(const struct bvh *b, cons
 				mask &= mask - 1;
 				if (mask && nearest_first) {
 					/* the others wait on the stack, the farthest deepest */
-					int order[WIDTH] = { c }, k = 1;
+					int order[WIDTH], k = 1;
+					order[0] = c;
 					for (; mask; mask &= mask - 1, k++) {
 						int i = k, m = __builtin_ctz((unsigned)mask);
 						for (; i > 0 && t[order[i - 1]] > t[m]; i--)
