@@ -774,6 +774,17 @@ static void test_reorder(void)
 {
 	struct builder b;
 	random_scene(&b, 3000, 1, v3s(0), false, 1);
+	/* spheres and triangles of the same centroid, which no split separates: leaves of
+	 * both kinds, which keep their list of ids after the reorder, where every other leaf
+	 * points straight at its primitives */
+	enum { NPAIRS = 8 };
+	struct vec3 pair[NPAIRS];
+	for (int i = 0; i < NPAIRS; i++) {
+		pair[i] = rand_in_box(v3s(-1), v3s(1));
+		add_sphere(&b, pair[i], 0.01);
+		add_triangle(&b, vadd(pair[i], v3(-0.02, -0.02, 0)), vadd(pair[i], v3(0.02, -0.02, 0)),
+		             vadd(pair[i], v3(0, 0.02, 0)));
+	}
 	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
 	enum { NRAYS = 3000 };
 	static struct ray rays[NRAYS];
@@ -783,7 +794,8 @@ static void test_reorder(void)
 	static struct vec3 pass[NRAYS];
 	for (int i = 0; i < NRAYS; i++) {
 		rays[i].o = rand_in_box(v3s(-2), v3s(2));
-		rays[i].d = rand_unit();
+		/* a third of the rays at the pairs */
+		rays[i].d = i % 3 ? rand_unit() : vunit(vsub(pair[i % NPAIRS], rays[i].o));
 		before[i] = (struct hit){ .t = INFINITY };
 		found[i] = bvh_intersect(bvh, &b.sc, &rays[i], &before[i]);
 		prim_geometry(&b.sc, before[i].prim, geom[i]);
