@@ -31,7 +31,7 @@ enum {
 	MIN_TASK = 4096,   /* primitives in a subtree worth a thread of its own */
 	TASKS_PER_TREE = 64, /* subtrees the top split aims for, so that threads share the work evenly */
 	REF_CHUNKS = 64,   /* pieces the making of the build records is cut into, for the same reason */
-	BIG_TREE = 1 << 18, /* primitives from which a node visit is priced as a cache miss, see node_cost */
+	BIG_TREE = 1 << 18, /* primitives from which a node visit is priced as a cache miss, see struct sah */
 };
 
 /* Four floats, with SSE where there is SSE (every x86-64) and GCC's generic vectors
@@ -180,6 +180,20 @@ struct task {
 	struct bounds bounds;    /* of its references */
 };
 
+/* The SAH's prices, in units: a node visit, and a test of a sphere and of a triangle.
+ * All 1, except in a tree of BIG_TREE primitives or more, whose lower nodes no longer
+ * stay in cache, where a node visit, a cache miss, costs three triangle tests. There
+ * the triangles' leaves grow and the node array shrinks (1M-triangle bunny: 1.7 -> 4.5
+ * triangles a leaf, 54 -> 15 MB of nodes): its camera rays measured 19% faster, its
+ * random rays 10%. Not the spheres': at the same price 10^6 spheres' leaves held 3.3
+ * spheres and their camera rays tested 11.8 spheres each instead of 1.5 (a leaf's box
+ * around small spheres far apart is mostly empty), with no faster a render. On small
+ * scenes the price of 3 cost 10-25% (the bunny, 10^3 spheres): their nodes are in
+ * cache. */
+struct sah {
+	unsigned node, prim[2]; /* prim[PRIM_SPHERE], prim[PRIM_TRIANGLE] */
+};
+
 /* The binary tree goes to bin, one slot per place a split can fall: the node that
  * splits refs[first, +n) before refs[first + mid] is bin[first + mid - 1], a slot no
  * other node can take. So every subtree, a worker's too, has its slots known before it
@@ -190,15 +204,7 @@ struct builder {
 	struct bin_node *bin;    /* n - 1 slots; the ones inside leaves stay unused */
 	struct child root;
 	bool brute;
-	/* The SAH's price of a node visit, in primitive tests: 1, or 3 for a tree of
-	 * BIG_TREE primitives or more, whose lower nodes no longer stay in cache, so that
-	 * each level a ray goes down costs a cache miss. Leaves then grow and the node array
-	 * shrinks: 1M-triangle bunny 1.7 -> 4.5 primitives a leaf, 54 -> 15 MB of nodes;
-	 * 10^6 spheres 1.1 -> 3.3, 76 -> 22 MB. Its camera rays measured 19% faster and its
-	 * random rays 10%; the spheres' render about the same (within the machine's noise,
-	 * perhaps 5% slower) and their build 0.53 -> 0.44 s. On small scenes the price of 3
-	 * cost 10-25% (the bunny, 10^3 spheres): the nodes it saved were in cache. */
-	double node_cost;
+	struct sah sah;
 	size_t task_size;        /* a subtree this small becomes a task; 0 while inside one */
 	struct task *tasks;
 	size_t ntasks, cap_tasks;
@@ -274,7 +280,7 @@ struct split {
  * (the sweep over the bins would cost small nodes more than the binning). axis -1 when
  * keeping a leaf is cheaper. */
 static struct split find_split(const struct build_ref *refs, size_t n, struct vbox cbox, double parent_area,
-                               double node_cost)
+                               const struct sah *sah)
 {
 	struct split best = { .axis = -1 };
 	int nbins = n < NBINS ? (int)n : NBINS;
@@ -282,7 +288,8 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 	float scale[4];
 	v4store(scale, bn.scale);
 	struct vbox bins[3][NBINS];
-	size_t counts[3][NBINS] = { { 0 } };
+	size_t counts[3][NBINS] = { { 0 } }; /* in sah units */
+	size_t leaf = 0;
 	for (int axis = 0; axis < 3; axis++)
 		for (int i = 0; i < nbins; i++)
 			bins[axis][i] = vbox_empty();
@@ -290,12 +297,14 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 		v4f lo = v4load(refs[i].lo), hi = v4load(refs[i].hi);
 		int k[4];
 		bins_of(&bn, refs[i].centroid, k);
+		unsigned unit = sah->prim[prim_kind(refs[i].prim)];
+		leaf += unit;
 		for (int axis = 0; axis < 3; axis++) {
-			counts[axis][k[axis]]++;
+			counts[axis][k[axis]] += unit;
 			vbox_add(&bins[axis][k[axis]], lo, hi);
 		}
 	}
-	double best_cost = (double)n; /* cost of a leaf, in primitive tests */
+	double best_cost = (double)leaf;
 	for (int axis = 0; axis < 3; axis++) {
 		if (scale[axis] == 0)
 			continue;
@@ -317,7 +326,7 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 			cnt += counts[axis][i - 1];
 			if (cnt == 0 || right_count[i] == 0)
 				continue;
-			double cost = node_cost + (vbox_area(acc) * (double)cnt + right_area[i] * (double)right_count[i]) / parent_area;
+			double cost = sah->node + (vbox_area(acc) * (double)cnt + right_area[i] * (double)right_count[i]) / parent_area;
 			if (cost < best_cost) {
 				best_cost = cost;
 				best = (struct split){ axis, i, bn };
@@ -378,7 +387,7 @@ static struct child build(struct builder *b, uint32_t parent, uint32_t c, uint32
 
 	struct split s = { .axis = -1 };
 	if (!b->brute && n > 1 && level < MAX_DEPTH)
-		s = find_split(refs, n, bd.cbox, vbox_area(bd.box), b->node_cost);
+		s = find_split(refs, n, bd.cbox, vbox_area(bd.box), &b->sah);
 	if (s.axis < 0 && !b->brute && n > MAX_LEAF && level < MAX_DEPTH) {
 		/* a leaf would be cheaper by SAH but is too big: split the widest axis in two
 		 * halves, which is binning with two bins */
@@ -668,7 +677,8 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	bvh->nprims = n;
 	if (n == 0)
 		return bvh;
-	struct builder b = { .brute = kind == ACCEL_NONE, .node_cost = n >= BIG_TREE ? 3 : 1 };
+	struct builder b = { .brute = kind == ACCEL_NONE };
+	b.sah = n >= BIG_TREE ? (struct sah){ 3, { 3, 1 } } : (struct sah){ 1, { 1, 1 } };
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	/* the records in chunks, on all threads where the build will use them */
