@@ -810,7 +810,7 @@ static inline void vray_lanes(v4f a, vray out[3])
 
 struct box_ray {
 	vray o_near[3], o_far[3], inv_near[3], inv_far[3];
-	int enter[3], leave[3];     /* indices into bvh_node.box */
+	size_t enter[3], leave[3];  /* byte offsets of rows of bvh_node.box (no index scaling in the node test) */
 };
 
 /* The entry distance of a box comes out at most (1 + u)^2 too large, the exit distance
@@ -855,9 +855,15 @@ static void box_ray_init(const struct ray *r, struct box_ray *s)
 	int bits = v4signbits(d_f);
 #pragma GCC unroll 3 /* GCC keeps these short loops rolled at -O2 */
 	for (int k = 0; k < 3; k++) {
-		s->enter[k] = k + 3 * (bits >> k & 1);
-		s->leave[k] = k + 3 * (~bits >> k & 1);
+		s->enter[k] = (size_t)(k + 3 * (bits >> k & 1)) * sizeof(float[WIDTH]);
+		s->leave[k] = (size_t)(k + 3 * (~bits >> k & 1)) * sizeof(float[WIDTH]);
 	}
+}
+
+/* The row of n's boxes at byte offset off. */
+static inline const float *box_row(const struct bvh_node *n, size_t off)
+{
+	return (const float *)((const char *)n->box + off);
 }
 
 /* tmax as the traversal compares with it: rounded up to float and widened as the exit
@@ -877,8 +883,8 @@ static inline int node_hit(const struct bvh_node *n, const struct box_ray *s, vr
 	__m256 tnear = _mm256_setzero_ps(), tfar = tmax;
 #pragma GCC unroll 3
 	for (int k = 0; k < 3; k++) {
-		__m256 near = _mm256_sub_ps(_mm256_load_ps(n->box[s->enter[k]]), s->o_near[k]);
-		__m256 far = _mm256_sub_ps(_mm256_load_ps(n->box[s->leave[k]]), s->o_far[k]);
+		__m256 near = _mm256_sub_ps(_mm256_load_ps(box_row(n, s->enter[k])), s->o_near[k]);
+		__m256 far = _mm256_sub_ps(_mm256_load_ps(box_row(n, s->leave[k])), s->o_far[k]);
 		__m256 t0 = _mm256_mul_ps(near, s->inv_near[k]), t1 = _mm256_mul_ps(far, s->inv_far[k]);
 		tnear = _mm256_max_ps(t0, tnear);
 		tfar = _mm256_min_ps(t1, tfar);
@@ -893,8 +899,8 @@ static inline int node_hit4(const struct bvh_node *n, const struct box_ray *s, i
 {
 	v4f tnear = v4set(0), tfar = tmax;
 	for (int k = 0; k < 3; k++) {
-		v4f t0 = v4mul(v4sub(v4load(&n->box[s->enter[k]][h]), s->o_near[k]), s->inv_near[k]);
-		v4f t1 = v4mul(v4sub(v4load(&n->box[s->leave[k]][h]), s->o_far[k]), s->inv_far[k]);
+		v4f t0 = v4mul(v4sub(v4load(box_row(n, s->enter[k]) + h), s->o_near[k]), s->inv_near[k]);
+		v4f t1 = v4mul(v4sub(v4load(box_row(n, s->leave[k]) + h), s->o_far[k]), s->inv_far[k]);
 		tnear = v4max(t0, tnear);
 		tfar = v4min(t1, tfar);
 	}
