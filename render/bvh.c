@@ -808,9 +808,22 @@ static inline void vray_lanes(v4f a, vray out[3])
 }
 #endif
 
+/* The rows of bvh_node.box a ray enters and leaves a box by on each axis, as byte
+ * offsets (the node test then scales no index), for each sign pattern of d: bit k of
+ * the pattern set when d's component k is negative (lo x, y, z are rows 0-2, hi 3-5). */
+struct box_rows {
+	size_t enter[3], leave[3];
+};
+#define BOX_ROW(k, neg) ((size_t)((k) + 3 * (neg)) * sizeof(float[WIDTH]))
+#define BOX_ROWS(b)                                                                         \
+	{ { BOX_ROW(0, (b) & 1), BOX_ROW(1, (b) >> 1 & 1), BOX_ROW(2, (b) >> 2 & 1) },         \
+	  { BOX_ROW(0, !((b) & 1)), BOX_ROW(1, !((b) >> 1 & 1)), BOX_ROW(2, !((b) >> 2 & 1)) } }
+static const struct box_rows box_rows[8] = { BOX_ROWS(0), BOX_ROWS(1), BOX_ROWS(2), BOX_ROWS(3),
+	                                     BOX_ROWS(4), BOX_ROWS(5), BOX_ROWS(6), BOX_ROWS(7) };
+
 struct box_ray {
 	vray o_near[3], o_far[3], inv_near[3], inv_far[3];
-	size_t enter[3], leave[3];  /* byte offsets of rows of bvh_node.box (no index scaling in the node test) */
+	struct box_rows rows;
 };
 
 /* The entry distance of a box comes out at most (1 + u)^2 too large, the exit distance
@@ -852,12 +865,7 @@ static void box_ray_init(const struct ray *r, struct box_ray *s)
 	vray_lanes(v4pick(neg, o_up, o_down), s->o_far);
 	vray_lanes(inv_in, s->inv_near);
 	vray_lanes(__builtin_convertvector(inv * (FAR_WIDEN + ROUND_MARGIN), v4f), s->inv_far);
-	int bits = v4signbits(d_f);
-#pragma GCC unroll 3 /* GCC keeps these short loops rolled at -O2 */
-	for (int k = 0; k < 3; k++) {
-		s->enter[k] = (size_t)(k + 3 * (bits >> k & 1)) * sizeof(float[WIDTH]);
-		s->leave[k] = (size_t)(k + 3 * (~bits >> k & 1)) * sizeof(float[WIDTH]);
-	}
+	s->rows = box_rows[v4signbits(d_f) & 7];
 }
 
 /* The row of n's boxes at byte offset off. */
@@ -881,10 +889,10 @@ static inline float far_bound(double tmax)
 static inline int node_hit(const struct bvh_node *n, const struct box_ray *s, vray tmax, float t_enter[WIDTH])
 {
 	__m256 tnear = _mm256_setzero_ps(), tfar = tmax;
-#pragma GCC unroll 3
+#pragma GCC unroll 3 /* GCC keeps this short loop rolled at -O2 */
 	for (int k = 0; k < 3; k++) {
-		__m256 near = _mm256_sub_ps(_mm256_load_ps(box_row(n, s->enter[k])), s->o_near[k]);
-		__m256 far = _mm256_sub_ps(_mm256_load_ps(box_row(n, s->leave[k])), s->o_far[k]);
+		__m256 near = _mm256_sub_ps(_mm256_load_ps(box_row(n, s->rows.enter[k])), s->o_near[k]);
+		__m256 far = _mm256_sub_ps(_mm256_load_ps(box_row(n, s->rows.leave[k])), s->o_far[k]);
 		__m256 t0 = _mm256_mul_ps(near, s->inv_near[k]), t1 = _mm256_mul_ps(far, s->inv_far[k]);
 		tnear = _mm256_max_ps(t0, tnear);
 		tfar = _mm256_min_ps(t1, tfar);
@@ -899,8 +907,8 @@ static inline int node_hit4(const struct bvh_node *n, const struct box_ray *s, i
 {
 	v4f tnear = v4set(0), tfar = tmax;
 	for (int k = 0; k < 3; k++) {
-		v4f t0 = v4mul(v4sub(v4load(box_row(n, s->enter[k]) + h), s->o_near[k]), s->inv_near[k]);
-		v4f t1 = v4mul(v4sub(v4load(box_row(n, s->leave[k]) + h), s->o_far[k]), s->inv_far[k]);
+		v4f t0 = v4mul(v4sub(v4load(box_row(n, s->rows.enter[k]) + h), s->o_near[k]), s->inv_near[k]);
+		v4f t1 = v4mul(v4sub(v4load(box_row(n, s->rows.leave[k]) + h), s->o_far[k]), s->inv_far[k]);
 		tnear = v4max(t0, tnear);
 		tfar = v4min(t1, tfar);
 	}
