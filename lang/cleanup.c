@@ -66,6 +66,12 @@ static const struct {
 };
 enum { NCRASHES = sizeof crashes / sizeof crashes[0] };
 
+/* The crash handler's own stack, for the main thread, where the parser, checker and
+ * evaluator recurse: a stack overflow's SIGSEGV comes with the stack full, and a handler
+ * run on it would fault again before it removed anything. (Render threads recurse no
+ * deeper than a scene's max_depth.) */
+static char crash_stack[64 * 1024];
+
 static void on_crash(int sig)
 {
 	remove_all();
@@ -79,6 +85,15 @@ static void on_crash(int sig)
 	raise(sig);
 }
 #endif
+
+bool cleanup_handles_crashes(void)
+{
+#ifdef SANITIZED
+	return false;
+#else
+	return true;
+#endif
+}
 
 static void on_signal(int sig)
 {
@@ -108,7 +123,9 @@ void cleanup_install_signals(void)
 		sigaction(handled[i], &sa, NULL);
 	}
 #ifndef SANITIZED
-	struct sigaction crash = { .sa_handler = on_crash, .sa_flags = SA_RESETHAND };
+	stack_t alt = { .ss_sp = crash_stack, .ss_size = sizeof crash_stack };
+	bool on_alt = sigaltstack(&alt, NULL) == 0;
+	struct sigaction crash = { .sa_handler = on_crash, .sa_flags = SA_RESETHAND | (on_alt ? SA_ONSTACK : 0) };
 	sigemptyset(&crash.sa_mask);
 	for (int i = 0; i < NCRASHES; i++)
 		sigaction(crashes[i].sig, &crash, NULL);

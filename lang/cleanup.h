@@ -16,9 +16,12 @@
  * SIGxxx" and ends the process by the same signal with its default action. It runs on
  * the main thread: render threads are started with the signals blocked
  * (cleanup_block_signals). Crash signals (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) get a
- * handler that does the same in whichever thread crashed, saying that scn crashed;
- * not in a build with AddressSanitizer, which reports crashes itself. */
+ * handler that does the same in whichever thread crashed, saying that scn crashed (on
+ * a stack of its own in the calling thread, so that a stack overflow there is reported
+ * too); not in a build with AddressSanitizer, which reports crashes itself. */
 void cleanup_install_signals(void);
+/* Whether cleanup_install_signals handles crashes: not with AddressSanitizer. */
+bool cleanup_handles_crashes(void);
 
 /* Registers a temporary file (or, with dir, a folder removed after the files) to remove
  * should the run end early; unregisters it. path is copied. Returns false when the table

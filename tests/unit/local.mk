@@ -43,3 +43,7 @@ TESTS += tests/unit/test_imgdiff
 tests_unit_test_imgdiff_SOURCES = tests/unit/test_imgdiff.c
 tests_unit_test_imgdiff_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
 tests_unit_test_imgdiff_LDADD = $(RENDER_LIBS)
+check_PROGRAMS += tests/unit/test_crash
+TESTS += tests/unit/test_crash
+tests_unit_test_crash_SOURCES = tests/unit/test_crash.c
+tests_unit_test_crash_LDADD = lang/libscnutil.a
