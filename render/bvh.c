@@ -938,9 +938,11 @@ static inline const uint32_t *leaf_ids(const struct bvh *b, uint32_t index, uint
  * subtree that starts beyond *tmax as it stands when its turn comes. With nearest_first
  * the children hit are visited in order of their entry distance, which lets a
  * closest-hit query lower *tmax early; a shadow query, whose tmax stays, takes them as
- * they come. The root's own box is not tested: its children's are, in the first node. */
-static inline __attribute__((always_inline)) void walk(const struct bvh *b, const struct ray *r, double *tmax, leaf_fn *visit, void *query,
-                        bool nearest_first)
+ * they come. The root's own box is not tested: its children's are, in the first node.
+ * Inlined into each query, so that its leaf test is a direct call, inlined too (the
+ * indirect call and its spills took 4% of the instructions on the bunny's rays). */
+static inline __attribute__((always_inline)) void walk(const struct bvh *b, const struct ray *r, double *tmax,
+                                                       leaf_fn *visit, void *query, bool nearest_first)
 {
 	struct box_ray s;
 	box_ray_init(r, &s);

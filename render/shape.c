@@ -91,13 +91,9 @@ bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h)
 	return true;
 }
 
-/* The axis of v's greatest component (ties to the later axis), without branches:
- * incoherent rays would mispredict them. */
 static int max_axis(struct vec3 v)
 {
-	int k = v.y >= v.x;
-	double m = k ? v.y : v.x;
-	return m > v.z ? k : 2;
+	return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2);
 }
 
 /* Coordinate k of v: the permutation's index, without a branch on it. */
