@@ -23,6 +23,7 @@ static long descend(long n, volatile char *up)
 {
 	volatile char frame[4096];
 	frame[0] = up[0];
+	frame[1] = 1;
 	return n == 0 ? frame[0] : descend(n - 1, frame) + frame[1];
 }
 
@@ -39,7 +40,7 @@ int main(void)
 	CHECK(err >= 0);
 	pid_t pid = fork();
 	if (pid == 0) {
-		/* a stack of 8 MiB whatever the shell's limit, and no core file */
+		/* a stack of 8 MiB at most, whatever the shell's limit, and no core file */
 		struct rlimit stack = { 8 << 20, 8 << 20 }, core = { 0, 0 };
 		setrlimit(RLIMIT_STACK, &stack);
 		setrlimit(RLIMIT_CORE, &core);
