@@ -73,11 +73,12 @@ static inline v4f v4mul(v4f a, v4f b) { return a * b; }
 static inline v4f v4add(v4f a, v4f b) { return a + b; }
 static inline v4f v4max(v4f a, v4f b) { v4i m = a > b; return (v4f)(((v4i)a & m) | ((v4i)b & ~m)); }
 static inline v4f v4min(v4f a, v4f b) { v4i m = a < b; return (v4f)(((v4i)a & m) | ((v4i)b & ~m)); }
-static inline int v4le(v4f a, v4f b)
+/* bit c set when lane c of m is set */
+static inline int v4bits(v4i m)
 {
-	v4i m = a <= b;
 	return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
 }
+static inline int v4le(v4f a, v4f b) { return v4bits(a <= b); }
 static inline void v4trunc(v4f a, int out[4])
 {
 	for (int i = 0; i < 4; i++)
@@ -85,11 +86,7 @@ static inline void v4trunc(v4f a, int out[4])
 }
 static inline v4f v4pick(v4f m, v4f a, v4f b) { return (v4f)(((v4i)m & (v4i)a) | (~(v4i)m & (v4i)b)); }
 static inline v4f v4signs(v4f a) { return (v4f)((v4i)a >> 31); }
-static inline int v4signbits(v4f a)
-{
-	v4i m = (v4i)a >> 31;
-	return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
-}
+static inline int v4signbits(v4f a) { return v4bits((v4i)a >> 31); }
 #endif
 
 /* The traversal's node: the boxes of up to WIDTH children, coordinate by coordinate so
@@ -516,10 +513,9 @@ static int gather(const struct bin_node *bin, uint32_t node, struct child out[WI
 }
 
 /* A subtree of the wide tree that a thread collapses on its own: below the binary child
- * ch, at wide level `level`; its nodes go to [offset, offset + size). */
+ * ch, at the jobs' wide level; its nodes go to [offset, offset + size). */
 struct wide_job {
 	struct child ch;
-	int level;
 	uint32_t offset, size;
 	size_t boxes;
 	int depth;
@@ -548,7 +544,7 @@ static struct child collapse(struct collapse *cl, struct child ch, int level)
 	if (cl->job_level && level == cl->job_level) {
 		if (!cl->out) {
 			xgrow((void **)&cl->jobs, &cl->cap_jobs, cl->njobs + 1, sizeof *cl->jobs);
-			cl->jobs[cl->njobs++] = (struct wide_job){ .ch = ch, .level = level };
+			cl->jobs[cl->njobs++] = (struct wide_job){ .ch = ch };
 			return ch;
 		}
 		/* its subtree, counted by then, takes the next size nodes, its root first */
@@ -583,6 +579,7 @@ struct wide_jobs {
 	const struct bin_node *bin;
 	struct bvh_node *out;
 	struct wide_job *jobs;
+	int level;               /* theirs, the collapse's job_level */
 };
 
 static void count_job(void *ctx, size_t i)
@@ -590,7 +587,7 @@ static void count_job(void *ctx, size_t i)
 	struct wide_jobs *w = ctx;
 	struct wide_job *j = &w->jobs[i];
 	struct collapse cl = { .bin = w->bin };
-	collapse(&cl, j->ch, j->level);
+	collapse(&cl, j->ch, w->level);
 	j->size = cl.next;
 	j->boxes = cl.boxes;
 	j->depth = cl.depth;
@@ -601,7 +598,7 @@ static void write_job(void *ctx, size_t i)
 	struct wide_jobs *w = ctx;
 	const struct wide_job *j = &w->jobs[i];
 	struct collapse cl = { .bin = w->bin, .out = w->out, .next = j->offset };
-	collapse(&cl, j->ch, j->level);
+	collapse(&cl, j->ch, w->level);
 }
 
 /* The wide tree of the binary one, which it frees: a pass to count, the array aligned
@@ -612,7 +609,7 @@ static void make_wide(struct bvh *bvh, struct bin_node *bin, bool parallel)
 {
 	struct collapse cl = { .bin = bin, .job_level = parallel ? 2 : 0 };
 	collapse(&cl, bvh->root, 0);
-	struct wide_jobs w = { bin, NULL, cl.jobs };
+	struct wide_jobs w = { bin, NULL, cl.jobs, cl.job_level };
 	parallel_for(cl.njobs, count_job, &w);
 	size_t total = cl.next, boxes = cl.boxes;
 	int depth = cl.depth;
@@ -643,11 +640,11 @@ static void make_ref(const struct scene *sc, size_t k, struct build_ref *r)
 	prim_bounds(sc, r->prim, &lo, &hi);
 	bool sphere = prim_kind(r->prim) == PRIM_SPHERE;
 	for (int a = 0; a < 3; a++) {
-		r->lo[a] = float_below(vget(lo, a));
-		r->hi[a] = float_above(vget(hi, a));
+		r->lo[a] = float_below(vget(&lo, a));
+		r->hi[a] = float_above(vget(&hi, a));
 		/* the centre of the exact bounds: a sphere's own, which its rounded bounds
 		 * would only approach */
-		r->centroid[a] = (float)(sphere ? vget(sc->spheres[k].center, a) : 0.5 * (vget(lo, a) + vget(hi, a)));
+		r->centroid[a] = (float)(sphere ? vget(&sc->spheres[k].center, a) : 0.5 * (vget(&lo, a) + vget(&hi, a)));
 	}
 }
 
@@ -927,11 +924,19 @@ static inline int node_hit(const struct bvh_node *n, const struct box_ray *s, vr
  * walk. */
 typedef bool leaf_fn(const struct bvh *b, uint32_t index, uint32_t count, void *query, double *tmax);
 
-/* The ids of a leaf that lists them, NULL for a LEAF_DIRECT one, whose i-th primitive
- * is index + i. */
+/* The ids of a leaf that lists them, NULL for a LEAF_DIRECT one; then the size of a
+ * leaf, and the id of its primitive i given its ids. */
 static inline const uint32_t *leaf_ids(const struct bvh *b, uint32_t index, uint32_t count)
 {
 	return count & LEAF_DIRECT ? NULL : b->prims + index;
+}
+static inline uint32_t leaf_size(uint32_t count)
+{
+	return count & ~LEAF_DIRECT;
+}
+static inline uint32_t leaf_prim(const uint32_t *ids, uint32_t index, uint32_t i)
+{
+	return ids ? ids[i] : index + i;
 }
 
 /* Visits every leaf whose box the ray may meet before *tmax and skips a deferred
@@ -1008,8 +1013,8 @@ static bool closest_leaf(const struct bvh *b, uint32_t index, uint32_t count, vo
 {
 	struct closest_query *q = query;
 	const uint32_t *ids = leaf_ids(b, index, count);
-	for (uint32_t i = 0; i < (count & ~LEAF_DIRECT); i++)
-		q->hit |= prim_intersect(q->sc, ids ? ids[i] : index + i, q->r, &q->tr, q->h);
+	for (uint32_t i = 0; i < leaf_size(count); i++)
+		q->hit |= prim_intersect(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, q->h);
 	*tmax = q->h->t;
 	return false;
 }
@@ -1036,8 +1041,8 @@ static bool shadow_leaf(const struct bvh *b, uint32_t index, uint32_t count, voi
 {
 	struct shadow_query *q = query;
 	const uint32_t *ids = leaf_ids(b, index, count);
-	for (uint32_t i = 0; i < (count & ~LEAF_DIRECT); i++) {
-		q->pass = prim_filter(q->sc, ids ? ids[i] : index + i, q->r, &q->tr, *tmax, q->pass);
+	for (uint32_t i = 0; i < leaf_size(count); i++) {
+		q->pass = prim_filter(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, *tmax, q->pass);
 		if (vzero(q->pass))
 			return true;
 	}

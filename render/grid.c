@@ -60,8 +60,8 @@ static struct box prim_box(const struct scene *sc, uint32_t prim)
 	/* centre -+ radius is rounded: one ulp outward holds the exact box */
 	struct box bx;
 	for (int k = 0; k < 3; k++) {
-		bx.lo[k] = nextafter(vget(lo, k), -INFINITY);
-		bx.hi[k] = nextafter(vget(hi, k), INFINITY);
+		bx.lo[k] = nextafter(vget(&lo, k), -INFINITY);
+		bx.hi[k] = nextafter(vget(&hi, k), INFINITY);
 	}
 	return bx;
 }

@@ -270,7 +270,7 @@ static bool on_checker_boundary(const struct scene *sc, size_t first, size_t las
 		for (int k = 0; k < 3; k++)
 			c[k] = vscale(object_point(sc, s, sc->vertices[sc->triangles[i].v[k]]), 1 / m->checker_size);
 		for (int axis = 0; axis < 3; axis++) {
-			double a = vget(c[0], axis), b = vget(c[1], axis), d = vget(c[2], axis);
+			double a = vget(&c[0], axis), b = vget(&c[1], axis), d = vget(&c[2], axis);
 			double r = round(a);
 			if (fabs(a - r) < 1e-3 && fabs(b - r) < 1e-3 && fabs(d - r) < 1e-3)
 				return true;

@@ -96,19 +96,12 @@ static int max_axis(struct vec3 v)
 	return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2);
 }
 
-/* Coordinate k of v: the permutation's index, without a branch on it. */
-static inline double coord(const struct vec3 *v, int k)
-{
-	return *(const double *)((const char *)v + (size_t)k * sizeof(double));
-}
-
 void tri_ray_init(const struct ray *r, struct tri_ray *tr)
 {
-	_Static_assert(sizeof(struct vec3) == 3 * sizeof(double), "coord() indexes struct vec3");
 	int kz = max_axis(vabs(r->d));
 	int kx = kz == 2 ? 0 : kz + 1;
 	int ky = kx == 2 ? 0 : kx + 1;
-	double dx = coord(&r->d, kx), dy = coord(&r->d, ky), dz = coord(&r->d, kz);
+	double dx = vget(&r->d, kx), dy = vget(&r->d, ky), dz = vget(&r->d, kz);
 	*tr = (struct tri_ray){ .o = r->o, .k = { kx, ky, kz }, .sx = -dx / dz, .sy = -dy / dz, .sz = 1 / dz };
 }
 
@@ -143,8 +136,8 @@ static inline double max_abs3(double a, double b, double c)
 /* Vertex v translated to the ray origin and permuted. */
 static inline struct vec3 to_ray(const struct tri_ray *tr, const struct vec3 *v)
 {
-	return v3(coord(v, tr->k[0]) - coord(&tr->o, tr->k[0]), coord(v, tr->k[1]) - coord(&tr->o, tr->k[1]),
-	          coord(v, tr->k[2]) - coord(&tr->o, tr->k[2]));
+	return v3(vget(v, tr->k[0]) - vget(&tr->o, tr->k[0]), vget(v, tr->k[1]) - vget(&tr->o, tr->k[1]),
+	          vget(v, tr->k[2]) - vget(&tr->o, tr->k[2]));
 }
 
 bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h)

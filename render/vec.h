@@ -38,7 +38,13 @@ static inline struct vec3 vunit(struct vec3 a)
 }
 static inline struct vec3 vmin(struct vec3 a, struct vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
 static inline struct vec3 vmax(struct vec3 a, struct vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
-static inline double vget(struct vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+/* Coordinate axis of *a, without a branch on axis (an incoherent ray's triangle test
+ * indexes by its own axes) and without a copy of *a. */
+static inline double vget(const struct vec3 *a, int axis)
+{
+	_Static_assert(sizeof(struct vec3) == 3 * sizeof(double), "vget indexes struct vec3");
+	return *(const double *)((const char *)a + (size_t)axis * sizeof(double));
+}
 static inline double vmaxc(struct vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
 static inline int vzero(struct vec3 a) { return a.x == 0 && a.y == 0 && a.z == 0; }
 /* a + s b */
