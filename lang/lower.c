@@ -247,7 +247,7 @@ static bool scene_fits(struct lowering *lw, int64_t other_bytes)
 	const struct scene_desc *desc = lw->desc;
 	const char *limit_is;
 	uint64_t limit = memory_available(&limit_is);
-	uint64_t total = (uint64_t)other_bytes + scene_bytes(desc->nobjects, 0);
+	uint64_t total = (uint64_t)other_bytes + scene_bytes(desc->nobjects, 0, 0);
 	const struct object_desc *at = NULL;
 	size_t triangles = 0, vertices = 0;
 	for (size_t i = 0; i < desc->nobjects; i++) {
@@ -258,7 +258,7 @@ static bool scene_fits(struct lowering *lw, int64_t other_bytes)
 			continue;
 		triangles += data->nfaces;
 		vertices += data->nvertices;
-		total = (uint64_t)other_bytes + scene_bytes(desc->nobjects + triangles, vertices);
+		total = (uint64_t)other_bytes + scene_bytes(desc->nobjects + triangles, triangles, vertices);
 		if (!at && total > limit)
 			at = o;
 	}

@@ -22,6 +22,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "tri_packet.h"
 #include "xalloc.h"
 
 enum {
@@ -31,6 +32,7 @@ enum {
 	MIN_TASK = 4096,   /* primitives in a subtree worth a thread of its own */
 	TASKS_PER_TREE = 64, /* subtrees the top split aims for, so that threads share the work evenly */
 	REF_CHUNKS = 64,   /* pieces the making of the build records is cut into, for the same reason */
+	MIN_PACKED = 2,    /* triangles in a leaf from which they go to packets: at most n / 2 packets */
 	BIG_TREE = 1 << 18, /* primitives from which a node visit is priced as a cache miss, see struct sah */
 };
 
@@ -109,6 +111,20 @@ struct bvh_node {
  * load of the ids was a cache miss of its own on the way to the primitives (a sixth of
  * the traversal's time on the 1M-triangle bunny's random rays). */
 #define LEAF_DIRECT (1u << 31)
+/* A LEAF_DIRECT leaf of triangles whose count also has LEAF_PACKED set has them in
+ * packets too, from packets[index] on, PACKET_LANES a packet (see tri_packet.h). */
+#define LEAF_PACKED (1u << 30)
+
+/* The primitives in a leaf, and the packets of a LEAF_PACKED leaf of n triangles. */
+static inline uint32_t leaf_size(uint32_t count)
+{
+	return count & ~(LEAF_DIRECT | LEAF_PACKED);
+}
+/* The packets of a LEAF_PACKED leaf of n triangles. */
+static inline uint32_t leaf_packets(uint32_t n)
+{
+	return (n + PACKET_LANES - 1) / PACKET_LANES;
+}
 
 /* A subtree as its parent sees it. */
 struct child {
@@ -127,6 +143,8 @@ struct bvh {
 	size_t nnodes, nboxes;
 	uint32_t *prims;   /* prim_id()s in leaf order; NULL once no leaf needs them */
 	size_t nprims;
+	struct tri_packet *packets; /* of the LEAF_PACKED leaves, in leaf order */
+	size_t npackets;
 	int depth;
 };
 
@@ -177,19 +195,29 @@ struct task {
 	struct bounds bounds;    /* of its references */
 };
 
-/* The SAH's prices, in units: a node visit, and a test of a sphere and of a triangle.
- * All 1, except in a tree of BIG_TREE primitives or more, whose lower nodes no longer
- * stay in cache, where a node visit, a cache miss, costs three triangle tests. There
- * the triangles' leaves grow and the node array shrinks (1M-triangle bunny: 1.7 -> 4.5
- * triangles a leaf, 54 -> 15 MB of nodes): its camera rays measured 19% faster, its
- * random rays 10%. Not the spheres': at the same price 10^6 spheres' leaves held 3.3
+/* The SAH's prices, in units: a node visit, a sphere test, and a test of a packet of up
+ * to four triangles (tri_packet.h), a leaf's triangles being priced by the packets they
+ * fill, so that leaves come in fours. In small trees a node visit and a sphere test cost
+ * 1 and a packet 2 (a packet at 1 cost the bunny's rays 3% more instructions). In a tree
+ * of BIG_TREE primitives or more, whose lower nodes no longer stay in cache, a node
+ * visit costs a packet test, a cache miss each: there the leaves grow and the node array
+ * shrinks (1M-triangle bunny: 1.7 -> 3.8 triangles a packet, 54 -> 12 MB of nodes). The
+ * spheres keep the node's price: at three times it, 10^6 spheres' leaves held 3.3
  * spheres and their camera rays tested 11.8 spheres each instead of 1.5 (a leaf's box
- * around small spheres far apart is mostly empty), with no faster a render. On small
- * scenes the price of 3 cost 10-25% (the bunny, 10^3 spheres): their nodes are in
- * cache. */
+ * around small spheres far apart is mostly empty), with no faster a render. */
 struct sah {
-	unsigned node, prim[2]; /* prim[PRIM_SPHERE], prim[PRIM_TRIANGLE] */
+	unsigned node, sphere, packet;
 };
+
+/* How many spheres and triangles a set holds: what its price as a leaf depends on. */
+struct kinds {
+	uint32_t n[2]; /* n[PRIM_SPHERE], n[PRIM_TRIANGLE] */
+};
+
+static inline double leaf_price(const struct sah *sah, struct kinds k)
+{
+	return (double)k.n[PRIM_SPHERE] * sah->sphere + (double)leaf_packets(k.n[PRIM_TRIANGLE]) * sah->packet;
+}
 
 /* The binary tree goes to bin, one slot per place a split can fall: the node that
  * splits refs[first, +n) before refs[first + mid] is bin[first + mid - 1], a slot no
@@ -285,8 +313,7 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 	float scale[4];
 	v4store(scale, bn.scale);
 	struct vbox bins[3][NBINS];
-	size_t counts[3][NBINS] = { { 0 } }; /* in sah units */
-	size_t leaf = 0;
+	struct kinds counts[3][NBINS] = { { { { 0 } } } }, leaf = { { 0 } };
 	for (int axis = 0; axis < 3; axis++)
 		for (int i = 0; i < nbins; i++)
 			bins[axis][i] = vbox_empty();
@@ -294,36 +321,39 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 		v4f lo = v4load(refs[i].lo), hi = v4load(refs[i].hi);
 		int k[4];
 		bins_of(&bn, refs[i].centroid, k);
-		unsigned unit = sah->prim[prim_kind(refs[i].prim)];
-		leaf += unit;
+		enum prim_kind kind = prim_kind(refs[i].prim);
+		leaf.n[kind]++;
 		for (int axis = 0; axis < 3; axis++) {
-			counts[axis][k[axis]] += unit;
+			counts[axis][k[axis]].n[kind]++;
 			vbox_add(&bins[axis][k[axis]], lo, hi);
 		}
 	}
-	double best_cost = (double)leaf;
+	double best_cost = leaf_price(sah, leaf);
 	for (int axis = 0; axis < 3; axis++) {
 		if (scale[axis] == 0)
 			continue;
 		/* sweep from the right, then from the left */
-		double right_area[NBINS];
-		size_t right_count[NBINS];
+		double right_area[NBINS], right_price[NBINS];
+		uint32_t right_n[NBINS];
 		struct vbox acc = vbox_empty();
-		size_t cnt = 0;
+		struct kinds cnt = { { 0 } };
 		for (int i = nbins - 1; i > 0; i--) {
 			vbox_add(&acc, bins[axis][i].lo, bins[axis][i].hi);
-			cnt += counts[axis][i];
+			cnt.n[0] += counts[axis][i].n[0];
+			cnt.n[1] += counts[axis][i].n[1];
 			right_area[i] = vbox_area(acc);
-			right_count[i] = cnt;
+			right_price[i] = leaf_price(sah, cnt);
+			right_n[i] = cnt.n[0] + cnt.n[1];
 		}
 		acc = vbox_empty();
-		cnt = 0;
+		cnt = (struct kinds){ { 0 } };
 		for (int i = 1; i < nbins; i++) {
 			vbox_add(&acc, bins[axis][i - 1].lo, bins[axis][i - 1].hi);
-			cnt += counts[axis][i - 1];
-			if (cnt == 0 || right_count[i] == 0)
+			cnt.n[0] += counts[axis][i - 1].n[0];
+			cnt.n[1] += counts[axis][i - 1].n[1];
+			if (cnt.n[0] + cnt.n[1] == 0 || right_n[i] == 0)
 				continue;
-			double cost = sah->node + (vbox_area(acc) * (double)cnt + right_area[i] * (double)right_count[i]) / parent_area;
+			double cost = sah->node + (vbox_area(acc) * leaf_price(sah, cnt) + right_area[i] * right_price[i]) / parent_area;
 			if (cost < best_cost) {
 				best_cost = cost;
 				best = (struct split){ axis, i, bn };
@@ -675,7 +705,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	if (n == 0)
 		return bvh;
 	struct builder b = { .brute = kind == ACCEL_NONE };
-	b.sah = n >= BIG_TREE ? (struct sah){ 3, { 3, 1 } } : (struct sah){ 1, { 1, 1 } };
+	b.sah = n >= BIG_TREE ? (struct sah){ 2, 2, 2 } : (struct sah){ 1, 1, 2 };
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	/* the records in chunks, on all threads where the build will use them */
@@ -716,6 +746,45 @@ static bool direct_leaf(const struct bvh *b, uint32_t *index, uint32_t *count)
 	return false;
 }
 
+/* Whether a leaf's triangles go to packets: a LEAF_DIRECT leaf of MIN_PACKED or more. */
+static bool packs(uint32_t index, uint32_t count)
+{
+	return (count & LEAF_DIRECT) && prim_kind(index) == PRIM_TRIANGLE && leaf_size(count) >= MIN_PACKED;
+}
+
+/* Packs the leaf (index, count) from b->packets[*next] on, if it packs. */
+static void pack_leaf(struct bvh *b, const struct scene *sc, uint32_t *index, uint32_t *count, size_t *next)
+{
+	if (!packs(*index, *count))
+		return;
+	uint32_t first = prim_index(*index), n = leaf_size(*count);
+	for (uint32_t i = 0; i < n; i += PACKET_LANES)
+		tri_packet_fill(&b->packets[*next + i / PACKET_LANES], sc, first + i,
+		                n - i < PACKET_LANES ? n - i : PACKET_LANES);
+	*index = (uint32_t)*next;
+	*count |= LEAF_PACKED;
+	*next += leaf_packets(n);
+}
+
+/* The direct leaves' triangles into packets, leaf by leaf in the nodes' order. */
+static void pack_leaves(struct bvh *b, const struct scene *sc)
+{
+	size_t n = packs(b->root.index, b->root.count) ? leaf_packets(leaf_size(b->root.count)) : 0;
+	for (size_t i = 0; i < b->nnodes; i++)
+		for (int c = 0; c < WIDTH; c++)
+			if (packs(b->nodes[i].index[c], b->nodes[i].count[c]))
+				n += leaf_packets(leaf_size(b->nodes[i].count[c]));
+	if (n == 0)
+		return;
+	b->packets = xaligned_alloc(64, n * sizeof *b->packets);
+	b->npackets = n;
+	size_t next = 0;
+	pack_leaf(b, sc, &b->root.index, &b->root.count, &next);
+	for (size_t i = 0; i < b->nnodes; i++)
+		for (int c = 0; c < WIDTH; c++)
+			pack_leaf(b, sc, &b->nodes[i].index[c], &b->nodes[i].count[c], &next);
+}
+
 void bvh_reorder(struct bvh *b, struct scene *sc)
 {
 	struct sphere *spheres = sc->nspheres ? xmalloc(sc->nspheres * sizeof *spheres) : NULL;
@@ -744,9 +813,10 @@ void bvh_reorder(struct bvh *b, struct scene *sc)
 		free(b->prims);
 		b->prims = NULL;
 	}
+	pack_leaves(b, sc);
 }
 
-uint64_t bvh_bytes(uint64_t n)
+uint64_t bvh_bytes(uint64_t n, uint64_t ntriangles)
 {
 	/* the n - 1 slots of the binary nodes, beside the build records; then beside the
 	 * wide nodes. Of those, a node with fewer than WIDTH children has only leaves below
@@ -755,7 +825,10 @@ uint64_t bvh_bytes(uint64_t n)
 	uint64_t build = n * (sizeof(struct build_ref) + sizeof(struct bin_node));
 	uint64_t wide_nodes = (n * WIDTH + 2 * (WIDTH - 1) - 1) / (2 * (WIDTH - 1));
 	uint64_t wide = n * sizeof(struct bin_node) + wide_nodes * sizeof(struct bvh_node);
-	return n * sizeof(uint32_t) + (build > wide ? build : wide);
+	/* then the nodes and the packets, at most one for two triangles (MIN_PACKED) */
+	uint64_t packed = wide_nodes * sizeof(struct bvh_node) + ntriangles / 2 * sizeof(struct tri_packet);
+	uint64_t most = build > wide ? build : wide;
+	return n * sizeof(uint32_t) + (most > packed ? most : packed);
 }
 
 void bvh_free(struct bvh *b)
@@ -764,12 +837,13 @@ void bvh_free(struct bvh *b)
 		return;
 	free(b->nodes);
 	free(b->prims);
+	free(b->packets);
 	free(b);
 }
 
 struct bvh_shape bvh_shape(const struct bvh *b)
 {
-	return (struct bvh_shape){ b->nprims ? b->nboxes : 0, b->nnodes, b->depth };
+	return (struct bvh_shape){ b->nprims ? b->nboxes : 0, b->nnodes, b->npackets, b->depth };
 }
 
 /* What the slab test needs of a ray, worked out once per axis: the box coordinate it
@@ -924,15 +998,11 @@ static inline int node_hit(const struct bvh_node *n, const struct box_ray *s, vr
  * walk. */
 typedef bool leaf_fn(const struct bvh *b, uint32_t index, uint32_t count, void *query, double *tmax);
 
-/* The ids of a leaf that lists them, NULL for a LEAF_DIRECT one; then the size of a
- * leaf, and the id of its primitive i given its ids. */
+/* The ids of a leaf that lists them, NULL for a LEAF_DIRECT one; then the id of its
+ * primitive i given its ids. */
 static inline const uint32_t *leaf_ids(const struct bvh *b, uint32_t index, uint32_t count)
 {
 	return count & LEAF_DIRECT ? NULL : b->prims + index;
-}
-static inline uint32_t leaf_size(uint32_t count)
-{
-	return count & ~LEAF_DIRECT;
 }
 static inline uint32_t leaf_prim(const uint32_t *ids, uint32_t index, uint32_t i)
 {
@@ -1012,6 +1082,12 @@ struct closest_query {
 static bool closest_leaf(const struct bvh *b, uint32_t index, uint32_t count, void *query, double *tmax)
 {
 	struct closest_query *q = query;
+	if (count & LEAF_PACKED) {
+		for (uint32_t p = 0; p < leaf_packets(leaf_size(count)); p++)
+			q->hit |= tri_packet_intersect(&b->packets[index + p], q->sc, &q->tr, q->h);
+		*tmax = q->h->t;
+		return false;
+	}
 	const uint32_t *ids = leaf_ids(b, index, count);
 	for (uint32_t i = 0; i < leaf_size(count); i++)
 		q->hit |= prim_intersect(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, q->h);
@@ -1040,6 +1116,14 @@ struct shadow_query {
 static bool shadow_leaf(const struct bvh *b, uint32_t index, uint32_t count, void *query, double *tmax)
 {
 	struct shadow_query *q = query;
+	if (count & LEAF_PACKED) {
+		for (uint32_t p = 0; p < leaf_packets(leaf_size(count)); p++) {
+			q->pass = tri_packet_filter(&b->packets[index + p], q->sc, &q->tr, *tmax, q->pass);
+			if (vzero(q->pass))
+				return true;
+		}
+		return false;
+	}
 	const uint32_t *ids = leaf_ids(b, index, count);
 	for (uint32_t i = 0; i < leaf_size(count); i++) {
 		q->pass = prim_filter(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, *tmax, q->pass);

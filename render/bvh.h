@@ -23,9 +23,10 @@ void bvh_free(struct bvh *b);
  * The image stays the same: the same primitives are tested in the same order. Any other
  * accelerator built on sc is left pointing at the old numbers. */
 void bvh_reorder(struct bvh *b, struct scene *sc);
-/* The most bytes bvh_build holds at once for n primitives (its build records, and the
- * nodes of a tree with one primitive a leaf, grown by doubling). */
-uint64_t bvh_bytes(uint64_t n);
+/* The most bytes bvh_build and bvh_reorder hold at once for n primitives of which
+ * ntriangles are triangles (the build records, the nodes of a tree with one primitive a
+ * leaf, the triangle packets). */
+uint64_t bvh_bytes(uint64_t n, uint64_t ntriangles);
 
 /* Closest hit with 0 < t < h->t over every primitive, planes included; updates h. */
 bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h);
@@ -35,9 +36,9 @@ bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray
 struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax);
 
 /* The tree's shape, for --stats and the tests: every node (the wide interior ones and
- * the leaves), the interior ones alone, and the depth. */
+ * the leaves), the interior ones alone, the triangle packets, and the depth. */
 struct bvh_shape {
-	size_t nodes, interior;
+	size_t nodes, interior, packets;
 	int depth;
 };
 struct bvh_shape bvh_shape(const struct bvh *b);

@@ -8,10 +8,10 @@
 #include "bvh.h"
 #include "grid.h"
 
-uint64_t scene_bytes(uint64_t nprims, uint64_t nvertices)
+uint64_t scene_bytes(uint64_t nprims, uint64_t ntriangles, uint64_t nvertices)
 {
 	size_t prim = sizeof(struct triangle) > sizeof(struct sphere) ? sizeof(struct triangle) : sizeof(struct sphere);
-	uint64_t bvh = bvh_bytes(nprims), grid = grid_bytes(nprims);
+	uint64_t bvh = bvh_bytes(nprims, ntriangles), grid = grid_bytes(nprims);
 	return 2 * (nprims * prim + nvertices * 2 * sizeof(struct vec3)) + (bvh > grid ? bvh : grid);
 }
 

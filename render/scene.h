@@ -130,9 +130,9 @@ struct scene {
 void scene_free(struct scene *s);
 
 /* A bound on the bytes a lowered scene and its accelerator (the larger of the BVH and the
- * grid) hold for nprims primitives and nvertices mesh vertices (each with a normal), its
- * arrays grown by doubling; for refusing a scene too big for the machine before it is
- * built. */
-uint64_t scene_bytes(uint64_t nprims, uint64_t nvertices);
+ * grid) hold for nprims primitives, ntriangles of them triangles, and nvertices mesh
+ * vertices (each with a normal), its arrays grown by doubling; for refusing a scene too
+ * big for the machine before it is built. */
+uint64_t scene_bytes(uint64_t nprims, uint64_t ntriangles, uint64_t nvertices);
 
 #endif

@@ -180,28 +180,16 @@ bool tri_ray_hit(const struct tri_ray *tr, const struct triangle *tri, struct hi
 	p1.z *= sz;
 	p2.z *= sz;
 	double tscaled = e0 * p0.z + e1 * p1.z + e2 * p2.z;
-	/* t = tscaled / det must lie in (0, h->t), compared without the division */
-	double limit = h->t * det;
-	/* | rather than ||: one branch on the outcome rather than one per comparison, which
-	 * a ray that hits or misses at random mispredicts */
-	bool outside = ((det < 0) & ((tscaled >= 0) | (tscaled < limit))) |
-	               ((det > 0) & ((tscaled <= 0) | (tscaled > limit)));
-	if ((det == 0) | outside)
+	if ((det == 0) | TRI_T_OUTSIDE(det, tscaled, h->t * det, 0.0))
 		return false;
 	double inv = 1 / det;
 	double t = tscaled * inv;
 
 	/* pbrt-v3: make sure t is conservatively greater than zero, given the rounding
 	 * errors of everything above */
-	double max_z = max_abs3(p0.z, p1.z, p2.z);
-	double delta_z = err_gamma(3) * max_z;
-	double max_x = max_abs3(p0.x, p1.x, p2.x);
-	double max_y = max_abs3(p0.y, p1.y, p2.y);
-	double delta_x = err_gamma(5) * (max_x + max_z);
-	double delta_y = err_gamma(5) * (max_y + max_z);
-	double delta_e = 2 * (err_gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-	double max_e = max_abs3(e0, e1, e2);
-	double delta_t = 3 * (err_gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * fabs(inv);
+	double max_x = max_abs3(p0.x, p1.x, p2.x), max_y = max_abs3(p0.y, p1.y, p2.y);
+	double max_z = max_abs3(p0.z, p1.z, p2.z), max_e = max_abs3(e0, e1, e2);
+	double delta_t = TRI_DELTA_T(max_x, max_y, max_z, max_e, fabs(inv));
 	if (!((t > delta_t) & (t < h->t)))
 		return false;
 	h->t = t;

@@ -42,6 +42,26 @@ static inline double err_gamma(int n)
 	return n * u / (1 - n * u);
 }
 
+/* Two steps of the watertight triangle test, written once for tri_ray_hit() and for the
+ * packet test (tri_packet.c), whose operands are doubles or vectors of four doubles: the
+ * same operations in the same order give the same results.
+ * TRI_T_OUTSIDE: t = tscaled / det lies outside (0, tmax), decided without the division
+ * (limit = tmax * det), with | rather than || (one branch on the outcome rather than one
+ * per comparison, which a ray that hits or misses at random mispredicts).
+ * TRI_DELTA_T: pbrt-v3's bound on the rounding error of t, from the greatest magnitudes
+ * of the transformed vertices' coordinates and of the edge functions, and |1 / det|:
+ * 3 (g3 max_e max_z + delta_e max_z + delta_z max_e) |1 / det|, where delta_z = g3 max_z,
+ * delta_x = g5 (max_x + max_z), delta_y = g5 (max_y + max_z) and
+ * delta_e = 2 (g2 max_x max_y + delta_y max_x + delta_x max_y), gN = err_gamma(N). */
+#define TRI_T_OUTSIDE(det, tscaled, limit, zero)                                                      \
+	((((det) < (zero)) & (((tscaled) >= (zero)) | ((tscaled) < (limit)))) |                           \
+	 (((det) > (zero)) & (((tscaled) <= (zero)) | ((tscaled) > (limit)))))
+#define TRI_DELTA_T(max_x, max_y, max_z, max_e, abs_inv)                                              \
+	(3 * (err_gamma(3) * (max_e) * (max_z) +                                                          \
+	      2 * (err_gamma(2) * (max_x) * (max_y) + err_gamma(5) * ((max_y) + (max_z)) * (max_x) +       \
+	           err_gamma(5) * ((max_x) + (max_z)) * (max_y)) * (max_z) +                               \
+	      err_gamma(3) * (max_z) * (max_e)) * (abs_inv))
+
 /* Each test reports a hit with 0 < t < h->t by updating h; true when it did. */
 bool ray_sphere(const struct sphere *s, const struct ray *r, struct hit *h);
 bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h);

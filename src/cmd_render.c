@@ -172,7 +172,7 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 		fprintf(stderr, "grid %d x %d x %d cells, %zu references\n", cells[0], cells[1], cells[2], refs);
 	} else {
 		struct bvh_shape shape = bvh_shape(sc->bvh);
-		fprintf(stderr, "bvh %zu nodes, depth %d\n", shape.nodes, shape.depth);
+		fprintf(stderr, "bvh %zu nodes, depth %d, %zu triangle packets\n", shape.nodes, shape.depth, shape.packets);
 	}
 	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
 	        (unsigned long long)st->camera, (unsigned long long)st->shadow, (unsigned long long)st->reflection,

@@ -768,8 +768,9 @@ static void prim_geometry(const struct scene *sc, uint32_t prim, double g[9])
 	}
 }
 
-/* bvh_reorder: with the scene's primitives renumbered in leaf order, each ray still
- * hits the same geometry at the same t and sees the same shadow. */
+/* bvh_reorder: with the scene's primitives renumbered in leaf order, and the triangles
+ * of the leaves in packets, each ray still hits the same geometry at the same t and sees
+ * the same shadow. */
 static void test_reorder(void)
 {
 	struct builder b;
@@ -803,6 +804,9 @@ static void test_reorder(void)
 	}
 	bvh_reorder(bvh, &b.sc);
 	CHECK(b.sc.nspheres > 20 && b.sc.ntriangles > 1000);
+	/* the leaves of two triangles or more in packets, at most one for two triangles */
+	struct bvh_shape shape = bvh_shape(bvh);
+	CHECK(shape.packets > b.sc.ntriangles / 8 && shape.packets <= b.sc.ntriangles / 2);
 	long hits = 0;
 	for (int i = 0; i < NRAYS; i++) {
 		struct hit h = { .t = INFINITY };

@@ -6,7 +6,9 @@
  *    ground sphere of radius 1e12 is hit by grazing rays from 1 unit above, at the right t;
  *  - self-intersection: rays spawned with offset_origin (reflected, refracted, towards a
  *    light) never re-hit the surface they leave on the same side;
- *  - planes: a parallel ray is a miss, never a NaN. */
+ *  - planes: a parallel ray is a miss, never a NaN;
+ *  - triangle packets (render/tri_packet.c): on the rays at the grids' shared edges and
+ *    vertices, the packet test gives the scalar test's hits and shadows to the bit. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -18,6 +20,7 @@
 #include "check.h"
 #include "scene.h"
 #include "shape.h"
+#include "tri_packet.h"
 #include "xalloc.h"
 
 #include "random.h"
@@ -161,8 +164,76 @@ static uint32_t vid(int i, int j) { return (uint32_t)(j * (GRID + 1) + i); }
 static uint32_t quad_lo(int i, int j) { return (uint32_t)(2 * (j * GRID + i)); }     /* v00 v11 v10 */
 static uint32_t quad_hi(int i, int j) { return (uint32_t)(2 * (j * GRID + i) + 1); } /* v00 v01 v11 */
 
+/* ---- triangle packets ---- */
+
+/* A material that lets half the light through, for the shadow filters compared. */
+static void give_transmit(struct mini *m)
+{
+	m->sc.materials = xcalloc(1, sizeof *m->sc.materials);
+	m->sc.materials[0].transmit = v3(0.5, 0.25, 0.75);
+	m->sc.nmaterials = 1;
+	m->sc.surfaces = xcalloc(1, sizeof *m->sc.surfaces);
+	m->sc.surfaces[0] = (struct surface){ 0, -1 };
+	m->sc.nsurfaces = 1;
+}
+
+struct packet_tally {
+	long rays, hits, bad;
+};
+
+/* The packet of triangles [first, first + n) against the scalar test of each in turn
+ * (prim_intersect and prim_filter, as a leaf of the BVH does without packets): from h->t
+ * = tmax, the same hit or none, the same t, b1, b2 and triangle; the same light through
+ * (0, tmax). */
+static void packet_agrees(const struct scene *sc, uint32_t first, uint32_t n, const struct ray *r, double tmax,
+                          struct packet_tally *pt)
+{
+	struct tri_packet pk;
+	tri_packet_fill(&pk, sc, first, n);
+	struct tri_ray tr;
+	tri_ray_init(r, &tr);
+	struct hit a = { .t = tmax, .prim = UINT32_MAX }, b = a;
+	bool fa = false;
+	for (uint32_t i = 0; i < n; i++)
+		fa |= prim_intersect(sc, prim_id(PRIM_TRIANGLE, first + i), r, &tr, &a);
+	bool fb = tri_packet_intersect(&pk, sc, &tr, &b);
+	struct vec3 pa = v3s(1);
+	for (uint32_t i = 0; i < n && !vzero(pa); i++)
+		pa = prim_filter(sc, prim_id(PRIM_TRIANGLE, first + i), r, &tr, tmax, pa);
+	struct vec3 pb = tri_packet_filter(&pk, sc, &tr, tmax, v3s(1));
+	pt->rays++;
+	pt->hits += fa;
+	bool same = fa == fb && a.t == b.t && a.prim == b.prim && (!fa || (a.b1 == b.b1 && a.b2 == b.b2)) &&
+	            pa.x == pb.x && pa.y == pb.y && pa.z == pb.z;
+	if (!same && pt->bad++ < 5)
+		fprintf(stderr, "packet of %u from triangle %u: scalar %s %#x t %a, packet %s %#x t %a; "
+		        "light <%g, %g, %g> against <%g, %g, %g>; ray o = <%a, %a, %a> d = <%a, %a, %a>, tmax %a\n",
+		        n, first, fa ? "hit" : "miss", a.prim, a.t, fb ? "hit" : "miss", b.prim, b.t, pa.x, pa.y, pa.z,
+		        pb.x, pb.y, pb.z, r->o.x, r->o.y, r->o.z, r->d.x, r->d.y, r->d.z, tmax);
+}
+
+/* An edge function that is -2^-60 in fact and rounds to exactly 0 in double: the ray
+ * passes a hair outside the triangle, as the scalar test's extended-precision step finds,
+ * and the packet test must leave that lane to it. */
+static void test_packet_edge(void)
+{
+	struct mini m;
+	mini_init(&m);
+	add_tri(&m, add_vertex(&m, v3(1, -1, 1)), add_vertex(&m, v3(1 + 0x1p-30, 1 + 0x1p-29, 1)),
+	        add_vertex(&m, v3(-1, -(1 + 0x1p-30), 1)));
+	give_transmit(&m);
+	struct ray r = { v3(0, 0, 0), v3(0, 0, 1) };
+	struct packet_tally pt = { 0 };
+	packet_agrees(&m.sc, 0, 1, &r, INFINITY, &pt);
+	CHECK(pt.bad == 0);
+	if (LDBL_MANT_DIG > DBL_MANT_DIG)
+		CHECK(!hits_tri(&m.sc, 0, &r));
+	scene_free(&m.sc);
+}
+
 /* Rays at the shared edges and vertices of the grid, from origins above it. */
-static void grid_rays(const struct mini *m, const struct rot *rot, double cell, bool axis_rays, const char *what)
+static void grid_rays(const struct mini *m, const struct rot *rot, double cell, bool axis_rays, const char *what,
+                      struct packet_tally *pt)
 {
 	const struct scene *sc = &m->sc;
 	struct bvh *bvh = bvh_build(sc, ACCEL_BVH);
@@ -183,6 +254,18 @@ static void grid_rays(const struct mini *m, const struct rot *rot, double cell, 
 				/* (i, j) is v00 of lo(i,j) and hi(i,j), v10 of lo(i-1,j), v11 of lo(i-1,j-1)
 				 * and hi(i-1,j-1), v01 of hi(i,j-1) */
 				aim(sc, bvh, o, at, fan, 6, &w, what);
+				/* the eight triangles of the four quads around (i, j), as two packets of
+				 * four, and as packets of three, two and one; to infinity and to a tmax
+				 * just past (i, j), where each hit ties with the others */
+				struct ray r = { o, vnorm(vsub(at, o)) };
+				double t_at = vlen(vsub(at, o));
+				for (int row = 0; row < 2; row++) {
+					uint32_t first = quad_lo(i - 1, j - row);
+					for (uint32_t n = 1; n <= PACKET_LANES; n++) {
+						packet_agrees(sc, first + PACKET_LANES - n, n, &r, INFINITY, pt);
+						packet_agrees(sc, first, n, &r, t_at * (1 + 0x1p-40), pt);
+					}
+				}
 				/* points on the three edges that leave (i, j) towards +x, +z and the diagonal */
 				double s = k == 0 ? 0.5 : urand();
 				if (axis_rays)
@@ -215,11 +298,13 @@ static void grid_rays(const struct mini *m, const struct rot *rot, double cell, 
 static void test_grid(void)
 {
 	struct mini m;
+	struct packet_tally pt = { 0 };
 	/* flat, axis-aligned, integer coordinates: rays straight down hit edges and
 	 * vertices exactly, so the edge functions are exactly 0 */
 	build_grid(&m, NULL, v3(-32, 0, -32), 1, true);
-	grid_rays(&m, NULL, 1, true, "flat grid, vertical rays");
-	grid_rays(&m, NULL, 1, false, "flat grid, oblique rays");
+	give_transmit(&m);
+	grid_rays(&m, NULL, 1, true, "flat grid, vertical rays", &pt);
+	grid_rays(&m, NULL, 1, false, "flat grid, oblique rays", &pt);
 	scene_free(&m.sc);
 	/* a bumpy grid in a random frame, near the origin and far from it */
 	static const double offsets[] = { 0, 1e3, 1e6 };
@@ -229,10 +314,16 @@ static void test_grid(void)
 		struct vec3 off = vscale(rand_unit(), offsets[k]);
 		char what[64];
 		build_grid(&m, &rot, off, cells[k], false);
+		give_transmit(&m);
 		snprintf(what, sizeof what, "bumpy grid at %g, cell %g", offsets[k], cells[k]);
-		grid_rays(&m, &rot, cells[k], false, what);
+		grid_rays(&m, &rot, cells[k], false, what, &pt);
 		scene_free(&m.sc);
 	}
+	if (pt.bad || getenv("TEST_SHAPE_VERBOSE"))
+		fprintf(stderr, "triangle packets: %ld rays, %ld hits, %ld differ from the scalar test\n", pt.rays,
+		        pt.hits, pt.bad);
+	CHECK(pt.bad == 0);
+	CHECK(pt.hits > pt.rays / 4);
 }
 
 /* Fans of n triangles around a raised centre: rays at the centre and at the spokes. */
@@ -716,6 +807,7 @@ int main(void)
 {
 	rng_seed(0x54a9e);
 	test_grid();
+	test_packet_edge();
 	test_fans();
 	test_small_far_spheres();
 	test_ground_sphere();
