@@ -766,23 +766,68 @@ static void pack_leaf(struct bvh *b, const struct scene *sc, uint32_t *index, ui
 	*next += leaf_packets(n);
 }
 
-/* The direct leaves' triangles into packets, leaf by leaf in the nodes' order. */
+static size_t packets_of(uint32_t index, uint32_t count)
+{
+	return packs(index, count) ? leaf_packets(leaf_size(count)) : 0;
+}
+
+/* The direct leaves' triangles into packets, leaf by leaf in the nodes' order, on every
+ * thread: the nodes cut into chunks (the first with the root), each chunk's packets
+ * counted, then filled from where the chunks before it end. */
+struct packing {
+	struct bvh *b;
+	const struct scene *sc;
+	size_t nchunks;
+	size_t *first; /* chunk c's first packet (its count, until the sum) */
+};
+
+static void packing_nodes(const struct packing *pk, size_t c, size_t *lo, size_t *hi)
+{
+	*lo = pk->b->nnodes * c / pk->nchunks;
+	*hi = pk->b->nnodes * (c + 1) / pk->nchunks;
+}
+
+static void count_packets(void *ctx, size_t c)
+{
+	struct packing *pk = ctx;
+	const struct bvh *b = pk->b;
+	size_t lo, hi, n = c == 0 ? packets_of(b->root.index, b->root.count) : 0;
+	packing_nodes(pk, c, &lo, &hi);
+	for (size_t i = lo; i < hi; i++)
+		for (int k = 0; k < WIDTH; k++)
+			n += packets_of(b->nodes[i].index[k], b->nodes[i].count[k]);
+	pk->first[c] = n;
+}
+
+static void fill_packets(void *ctx, size_t c)
+{
+	struct packing *pk = ctx;
+	struct bvh *b = pk->b;
+	size_t lo, hi, next = pk->first[c];
+	if (c == 0)
+		pack_leaf(b, pk->sc, &b->root.index, &b->root.count, &next);
+	packing_nodes(pk, c, &lo, &hi);
+	for (size_t i = lo; i < hi; i++)
+		for (int k = 0; k < WIDTH; k++)
+			pack_leaf(b, pk->sc, &b->nodes[i].index[k], &b->nodes[i].count[k], &next);
+}
+
 static void pack_leaves(struct bvh *b, const struct scene *sc)
 {
-	size_t n = packs(b->root.index, b->root.count) ? leaf_packets(leaf_size(b->root.count)) : 0;
-	for (size_t i = 0; i < b->nnodes; i++)
-		for (int c = 0; c < WIDTH; c++)
-			if (packs(b->nodes[i].index[c], b->nodes[i].count[c]))
-				n += leaf_packets(leaf_size(b->nodes[i].count[c]));
+	size_t first[REF_CHUNKS];
+	struct packing pk = { b, sc, b->nnodes > MIN_TASK ? REF_CHUNKS : 1, first };
+	parallel_for(pk.nchunks, count_packets, &pk);
+	size_t n = 0;
+	for (size_t c = 0; c < pk.nchunks; c++) {
+		size_t count = first[c];
+		first[c] = n;
+		n += count;
+	}
 	if (n == 0)
 		return;
 	b->packets = xaligned_alloc(64, n * sizeof *b->packets);
 	b->npackets = n;
-	size_t next = 0;
-	pack_leaf(b, sc, &b->root.index, &b->root.count, &next);
-	for (size_t i = 0; i < b->nnodes; i++)
-		for (int c = 0; c < WIDTH; c++)
-			pack_leaf(b, sc, &b->nodes[i].index[c], &b->nodes[i].count[c], &next);
+	parallel_for(pk.nchunks, fill_packets, &pk);
 }
 
 void bvh_reorder(struct bvh *b, struct scene *sc)
