@@ -1,7 +1,6 @@
 /* xalloc.c: allocation that never returns NULL. Callers never check; running out of
  * memory ends the program with exit status 4, as LANGUAGE.md section 8 specifies, after
  * removing the temporary files of unfinished output (cleanup.h). */
-#define _DEFAULT_SOURCE 1 /* madvise's MADV_HUGEPAGE, beside the build's _XOPEN_SOURCE */
 #include "xalloc.h"
 
 #include "cleanup.h"
@@ -11,7 +10,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 
 /* SCN_ALLOC_LIMIT=BYTES makes every allocation larger than BYTES fail as if memory had
  * run out: the test suite's way to reach this path in a render, which the up-front
@@ -66,21 +64,6 @@ void *xaligned_alloc(size_t align, size_t size)
 	void *p = size <= alloc_limit() ? aligned_alloc(align, size ? size : align) : NULL;
 	if (!p)
 		out_of_memory(size);
-	return p;
-}
-
-void *xbig_alloc(size_t size)
-{
-	enum { LINE = 64, HUGE_PAGE = 2 << 20 };
-	size_t align = size < HUGE_PAGE ? LINE : HUGE_PAGE;
-	if (size > SIZE_MAX - align)
-		out_of_memory(SIZE_MAX);
-	size_t whole = (size + align - 1) / align * align;
-	void *p = xaligned_alloc(align, whole);
-#ifdef MADV_HUGEPAGE
-	if (align == HUGE_PAGE)
-		madvise(p, whole, MADV_HUGEPAGE); /* advice: no harm done if the kernel declines it */
-#endif
 	return p;
 }
 

@@ -652,7 +652,7 @@ static void make_wide(struct bvh *bvh, struct bin_node *bin, bool parallel)
 	bvh->nboxes = boxes + 1;
 	bvh->depth = depth;
 	if (total) {
-		w.out = bvh->nodes = xbig_alloc(total * sizeof *bvh->nodes);
+		w.out = bvh->nodes = xaligned_alloc(64, total * sizeof *bvh->nodes);
 		cl.out = bvh->nodes;
 		cl.next = 0;
 		bvh->root = collapse(&cl, bvh->root, 0);
@@ -825,15 +825,15 @@ static void pack_leaves(struct bvh *b, const struct scene *sc)
 	}
 	if (n == 0)
 		return;
-	b->packets = xbig_alloc(n * sizeof *b->packets);
+	b->packets = xaligned_alloc(64, n * sizeof *b->packets);
 	b->npackets = n;
 	parallel_for(pk.nchunks, fill_packets, &pk);
 }
 
 void bvh_reorder(struct bvh *b, struct scene *sc)
 {
-	struct sphere *spheres = sc->nspheres ? xbig_alloc(sc->nspheres * sizeof *spheres) : NULL;
-	struct triangle *triangles = sc->ntriangles ? xbig_alloc(sc->ntriangles * sizeof *triangles) : NULL;
+	struct sphere *spheres = sc->nspheres ? xmalloc(sc->nspheres * sizeof *spheres) : NULL;
+	struct triangle *triangles = sc->ntriangles ? xmalloc(sc->ntriangles * sizeof *triangles) : NULL;
 	uint32_t ns = 0, nt = 0;
 	for (size_t i = 0; i < b->nprims; i++) {
 		uint32_t k = prim_index(b->prims[i]);
