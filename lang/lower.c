@@ -194,9 +194,6 @@ static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_
 		return false;
 	xgrow((void **)&sc->triangles, &lw->cap_triangles, sc->ntriangles + 1, sizeof *sc->triangles);
 	struct triangle *t = &sc->triangles[sc->ntriangles++];
-	t->p[0] = a;
-	t->p[1] = b;
-	t->p[2] = c;
 	memcpy(t->v, v, sizeof t->v);
 	memcpy(t->n, n, sizeof t->n);
 	t->surface = surface;

@@ -64,12 +64,10 @@ struct plane {
 
 #define NO_NORMALS UINT32_MAX
 
-/* p[] repeats the vertices' positions: the intersection test reads them from the
- * triangle, in one place, rather than through three indices into scene.vertices,
- * which in a big mesh cost a cache miss each (bench/embree_compare: 11 to 20% more rays
- * a second on a 940,544-triangle mesh, 6% on a small one). */
+/* A triangle by the indices of its vertices. The BVH's traversal reads their positions
+ * from its packets (render/tri_packet.h), four triangles' in one run of memory, which
+ * copy them; everything else (hit points, bounds, the grid) goes through v[]. */
 struct triangle {
-	struct vec3 p[3];              /* scene.vertices[v[k]] */
 	uint32_t v[3];                 /* into scene.vertices */
 	uint32_t n[3];                 /* into scene.normals, or NO_NORMALS (flat) */
 	uint32_t surface;

@@ -72,8 +72,8 @@ void prim_bounds(const struct scene *sc, uint32_t prim, struct vec3 *lo, struct 
 		*lo = vsub(s->center, v3s(s->radius));
 		*hi = vadd(s->center, v3s(s->radius));
 	} else {
-		const struct triangle *t = &sc->triangles[i];
-		struct vec3 a = t->p[0], b = t->p[1], c = t->p[2];
+		const uint32_t *v = sc->triangles[i].v;
+		struct vec3 a = sc->vertices[v[0]], b = sc->vertices[v[1]], c = sc->vertices[v[2]];
 		*lo = vmin(a, vmin(b, c));
 		*hi = vmax(a, vmax(b, c));
 	}
@@ -140,19 +140,21 @@ static inline struct vec3 to_ray(const struct tri_ray *tr, const struct vec3 *v)
 	          vget(v, tr->k[2]) - vget(&tr->o, tr->k[2]));
 }
 
-bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h)
+bool ray_triangle(const struct scene *sc, uint32_t tri, const struct ray *r, struct hit *h)
 {
 	struct tri_ray tr;
 	tri_ray_init(r, &tr);
-	return tri_ray_hit(&tr, tri, h);
+	return tri_ray_hit(&tr, sc, tri, h);
 }
 
-bool tri_ray_hit(const struct tri_ray *tr, const struct triangle *tri, struct hit *h)
+bool tri_ray_hit(const struct tri_ray *tr, const struct scene *sc, uint32_t tri, struct hit *h)
 {
 	/* Translate to the ray origin, permute so that z is the ray's largest axis, and
 	 * shear so that the ray is the +z axis: the edge functions then depend only on 2-D
 	 * coordinates, and an edge shared by two triangles gives both the same values. */
-	struct vec3 p0 = to_ray(tr, &tri->p[0]), p1 = to_ray(tr, &tri->p[1]), p2 = to_ray(tr, &tri->p[2]);
+	const uint32_t *v = sc->triangles[tri].v;
+	struct vec3 p0 = to_ray(tr, &sc->vertices[v[0]]), p1 = to_ray(tr, &sc->vertices[v[1]]),
+	            p2 = to_ray(tr, &sc->vertices[v[2]]);
 	double sx = tr->sx, sy = tr->sy, sz = tr->sz;
 	p0.x += sx * p0.z;
 	p0.y += sy * p0.z;
@@ -229,7 +231,7 @@ void surface_at(const struct scene *sc, const struct ray *r, const struct hit *h
 	}
 	case PRIM_TRIANGLE: {
 		const struct triangle *tri = &sc->triangles[prim_index(h->prim)];
-		struct vec3 a = tri->p[0], b = tri->p[1], c = tri->p[2];
+		struct vec3 a = sc->vertices[tri->v[0]], b = sc->vertices[tri->v[1]], c = sc->vertices[tri->v[2]];
 		double b0 = 1 - h->b1 - h->b2;
 		struct vec3 wa = vscale(a, b0), wb = vscale(b, h->b1), wc = vscale(c, h->b2);
 		sp->p = vadd(vadd(wa, wb), wc);

@@ -65,7 +65,8 @@ static inline double err_gamma(int n)
 /* Each test reports a hit with 0 < t < h->t by updating h; true when it did. */
 bool ray_sphere(const struct sphere *s, const struct ray *r, struct hit *h);
 bool ray_plane(const struct plane *pl, const struct ray *r, struct hit *h);
-bool ray_triangle(const struct triangle *tri, const struct ray *r, struct hit *h);
+/* triangle tri of sc */
+bool ray_triangle(const struct scene *sc, uint32_t tri, const struct ray *r, struct hit *h);
 
 /* A ray as the watertight triangle test takes it (Woop et al. section 3): the axes
  * permuted so that z is the direction's largest and the shear that turns the ray into
@@ -84,7 +85,7 @@ static inline void tri_ray_for(const struct scene *sc, const struct ray *r, stru
 		tri_ray_init(r, tr);
 }
 /* ray_triangle() of the ray tr was made from */
-bool tri_ray_hit(const struct tri_ray *tr, const struct triangle *tri, struct hit *h);
+bool tri_ray_hit(const struct tri_ray *tr, const struct scene *sc, uint32_t tri, struct hit *h);
 
 /* Every t in (0, tmax) at which r crosses the sphere (0, 1 or 2 values); for the
  * shadow filter, which counts each crossing. */
@@ -110,7 +111,7 @@ static inline bool prim_intersect(const struct scene *sc, uint32_t prim, const s
 {
 	uint32_t i = prim_index(prim);
 	bool hit = prim_kind(prim) == PRIM_SPHERE ? ray_sphere(&sc->spheres[i], r, h)
-	                                          : tri_ray_hit(tr, &sc->triangles[i], h);
+	                                          : tri_ray_hit(tr, sc, i, h);
 	if (hit)
 		h->prim = prim;
 	return hit;
@@ -134,7 +135,7 @@ static inline struct vec3 prim_filter(const struct scene *sc, uint32_t prim, con
 			pass = vmul(pass, transmit_of(sc, sc->spheres[k].surface));
 	} else {
 		struct hit h = { .t = tmax };
-		if (tri_ray_hit(tr, &sc->triangles[k], &h))
+		if (tri_ray_hit(tr, sc, k, &h))
 			pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
 	}
 	return pass;

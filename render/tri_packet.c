@@ -65,7 +65,7 @@ void tri_packet_fill(struct tri_packet *pk, const struct scene *sc, uint32_t fir
 		pk->tri[l] = k;
 		for (int v = 0; v < 3; v++)
 			for (int a = 0; a < 3; a++)
-				pk->p[v][a][l] = vget(&sc->triangles[k].p[v], a);
+				pk->p[v][a][l] = vget(&sc->vertices[sc->triangles[k].v[v]], a);
 	}
 }
 
@@ -133,7 +133,7 @@ bool tri_packet_intersect(const struct tri_packet *pk, const struct scene *sc, c
 		int l = __builtin_ctz((unsigned)todo);
 		uint32_t k = pk->tri[l];
 		if (ln.on_edge >> l & 1) {
-			if (!tri_ray_hit(tr, &sc->triangles[k], h))
+			if (!tri_ray_hit(tr, sc, k, h))
 				continue;
 		} else {
 			/* accepted against the tmax the lanes before left */
@@ -158,7 +158,7 @@ struct vec3 tri_packet_filter(const struct tri_packet *pk, const struct scene *s
 		int l = __builtin_ctz((unsigned)todo);
 		uint32_t k = pk->tri[l];
 		struct hit h = { .t = tmax };
-		if ((ln.on_edge >> l & 1) && !tri_ray_hit(tr, &sc->triangles[k], &h))
+		if ((ln.on_edge >> l & 1) && !tri_ray_hit(tr, sc, k, &h))
 			continue;
 		pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
 		if (vzero(pass))

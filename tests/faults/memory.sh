@@ -63,7 +63,7 @@ no_output "a sky image too big"
 printf 'camera { resolution 64, 48 }\nfor i in 0 .. 4000 { mesh { "%s"  translate <i, 0, 0> } }\n' \
 	"$SCN_SRCDIR/examples/bunny.ply" >bunnies.scn
 expect_capped 4 10 "$SCN" render bunnies.scn -o dest/keep.png
-expect_grep "$work/err" '^bunnies\.scn:2:22: error: the render needs 7\.[0-9] GiB for 14696000 triangles, their BVH and the image; ulimit -v leaves 1\.[0-9] GiB \(this mesh passes it\)$'
+expect_grep "$work/err" '^bunnies\.scn:2:22: error: the render needs 6\.[0-9] GiB for 14696000 triangles, their BVH and the image; ulimit -v leaves 1\.[0-9] GiB \(this mesh passes it\)$'
 no_output "4000 bunnies"
 expect_capped 0 10 "$SCN" check bunnies.scn
 

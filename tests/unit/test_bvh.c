@@ -99,8 +99,7 @@ static void add_tri_idx(struct builder *b, uint32_t i, uint32_t j, uint32_t k)
 {
 	xgrow((void **)&b->sc.triangles, &b->cap_t, b->sc.ntriangles + 1, sizeof *b->sc.triangles);
 	b->sc.triangles[b->sc.ntriangles++] =
-		(struct triangle){ { b->sc.vertices[i], b->sc.vertices[j], b->sc.vertices[k] },
-		                   { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, rand_surface() };
+		(struct triangle){ { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, rand_surface() };
 }
 
 static void add_triangle(struct builder *b, struct vec3 p0, struct vec3 p1, struct vec3 p2)
@@ -238,7 +237,7 @@ static bool ref_intersect(const struct scene *sc, const struct ray *r, struct hi
 			hit = true;
 		}
 	for (size_t i = 0; i < sc->ntriangles; i++)
-		if (ray_triangle(&sc->triangles[i], r, h)) {
+		if (ray_triangle(sc, i, r, h)) {
 			h->prim = prim_id(PRIM_TRIANGLE, (uint32_t)i);
 			hit = true;
 		}
@@ -266,7 +265,7 @@ static struct vec3 ref_transmittance(const struct scene *sc, const struct ray *r
 	}
 	for (size_t i = 0; i < sc->ntriangles; i++) {
 		struct hit h = { .t = tmax };
-		if (ray_triangle(&sc->triangles[i], r, &h))
+		if (ray_triangle(sc, i, r, &h))
 			pass = vmul(pass, kt_of(sc, sc->triangles[i].surface));
 	}
 	return pass;
@@ -279,7 +278,7 @@ static double alone_t(const struct scene *sc, uint32_t prim, const struct ray *r
 	uint32_t i = prim_index(prim);
 	switch (prim_kind(prim)) {
 	case PRIM_SPHERE: ray_sphere(&sc->spheres[i], r, &h); break;
-	case PRIM_TRIANGLE: ray_triangle(&sc->triangles[i], r, &h); break;
+	case PRIM_TRIANGLE: ray_triangle(sc, i, r, &h); break;
 	case PRIM_PLANE: ray_plane(&sc->planes[i], r, &h); break;
 	}
 	return h.t;

@@ -75,9 +75,7 @@ static uint32_t add_vertex(struct mini *m, struct vec3 v)
 static uint32_t add_tri(struct mini *m, uint32_t i, uint32_t j, uint32_t k)
 {
 	xgrow((void **)&m->sc.triangles, &m->cap_t, m->sc.ntriangles + 1, sizeof *m->sc.triangles);
-	const struct vec3 *v = m->sc.vertices;
-	m->sc.triangles[m->sc.ntriangles] =
-		(struct triangle){ { v[i], v[j], v[k] }, { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, 0 };
+	m->sc.triangles[m->sc.ntriangles] = (struct triangle){ { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, 0 };
 	return (uint32_t)m->sc.ntriangles++;
 }
 
@@ -91,7 +89,7 @@ static struct vec3 tri_normal(const struct scene *sc, uint32_t t)
 static bool hits_tri(const struct scene *sc, uint32_t t, const struct ray *r)
 {
 	struct hit h = { .t = INFINITY };
-	return ray_triangle(&sc->triangles[t], r, &h);
+	return ray_triangle(sc, t, r, &h);
 }
 
 /* ---- watertightness ---- */
@@ -667,7 +665,7 @@ static void test_self_triangles(void)
 		struct ray r = { vadd(x, vscale(dir, size * lrand(0.1, 1e3))), v3s(0) };
 		r.d = vnorm(vsub(x, r.o));
 		struct hit h = { .t = INFINITY };
-		if (!ray_triangle(&m.sc.triangles[0], &r, &h)) {
+		if (!ray_triangle(&m.sc, 0, &r, &h)) {
 			scene_free(&m.sc);
 			continue;
 		}
@@ -685,7 +683,7 @@ static void test_self_triangles(void)
 			struct ray s2 = { offset_origin(&sp, outs[i]), vnorm(outs[i]) };
 			struct hit h2 = { .t = INFINITY };
 			st.tests++;
-			if (ray_triangle(&m.sc.triangles[0], &s2, &h2))
+			if (ray_triangle(&m.sc, 0, &s2, &h2))
 				self_fail(&st, i == 0 ? "triangle, reflected" : "triangle, transmitted", &s2, h2.t);
 		}
 		scene_free(&m.sc);
@@ -798,7 +796,7 @@ static void test_plane_parallel(void)
 	add_tri(&m, add_vertex(&m, v3(0, 0, 0)), add_vertex(&m, v3(1, 0, 0)), add_vertex(&m, v3(0, 0, 1)));
 	r = (struct ray){ v3(-1, 0, 0.25), v3(1, 0, 0) };
 	h = (struct hit){ .t = INFINITY };
-	CHECK(!ray_triangle(&m.sc.triangles[0], &r, &h));
+	CHECK(!ray_triangle(&m.sc, 0, &r, &h));
 	CHECK(h.t == INFINITY);
 	scene_free(&m.sc);
 }
