@@ -5,7 +5,8 @@
  * loses what it holds, and the slab test in float is made conservative by rounding the
  * ray's origin and 1/d outward and widening the exit distance (NUMERICS.md section 1;
  * pbrt 3rd ed. section 3.9.2); it is robust to zero direction components and origins on
- * a slab (Ize, "Robust BVH Ray Traversal", JCGT 2013).
+ * a slab (Ize, "Robust BVH Ray Traversal", JCGT 2013). After bvh_reorder a leaf of
+ * triangles keeps them in packets of four, tested four at once (tri_packet.h).
  *
  * The build splits the top of the tree on one thread and hands the subtrees below a size
  * fixed by the primitive count to worker threads, each node going to a slot fixed by
@@ -111,16 +112,18 @@ struct bvh_node {
  * load of the ids was a cache miss of its own on the way to the primitives (a sixth of
  * the traversal's time on the 1M-triangle bunny's random rays). */
 #define LEAF_DIRECT (1u << 31)
-/* A LEAF_DIRECT leaf of triangles whose count also has LEAF_PACKED set has them in
- * packets too, from packets[index] on, PACKET_LANES a packet (see tri_packet.h). */
+/* A LEAF_DIRECT leaf of MIN_PACKED triangles or more has LEAF_PACKED set too, once
+ * bvh_reorder has copied them into packets (tri_packet.h), PACKET_LANES a packet: its
+ * index is then its first packet's in packets, the others following it, and each
+ * packet names its triangles. */
 #define LEAF_PACKED (1u << 30)
 
-/* The primitives in a leaf, and the packets of a LEAF_PACKED leaf of n triangles. */
+/* The primitives in a leaf. */
 static inline uint32_t leaf_size(uint32_t count)
 {
 	return count & ~(LEAF_DIRECT | LEAF_PACKED);
 }
-/* The packets of a LEAF_PACKED leaf of n triangles. */
+/* The packets n triangles fill, PACKET_LANES a packet. */
 static inline uint32_t leaf_packets(uint32_t n)
 {
 	return (n + PACKET_LANES - 1) / PACKET_LANES;
@@ -201,7 +204,8 @@ struct task {
  * 1 and a packet 2 (a packet at 1 cost the bunny's rays 3% more instructions). In a tree
  * of BIG_TREE primitives or more, whose lower nodes no longer stay in cache, a node
  * visit costs a packet test, a cache miss each: there the leaves grow and the node array
- * shrinks (1M-triangle bunny: 1.7 -> 3.8 triangles a packet, 54 -> 12 MB of nodes). The
+ * shrinks (1M-triangle bunny: 3.8 triangles a packet, 12 MB of nodes; 54 MB at a node
+ * price of 1 and one triangle a unit). The
  * spheres keep the node's price: at three times it, 10^6 spheres' leaves held 3.3
  * spheres and their camera rays tested 11.8 spheres each instead of 1.5 (a leaf's box
  * around small spheres far apart is mostly empty), with no faster a render. */
@@ -1130,12 +1134,11 @@ static bool closest_leaf(const struct bvh *b, uint32_t index, uint32_t count, vo
 	if (count & LEAF_PACKED) {
 		for (uint32_t p = 0; p < leaf_packets(leaf_size(count)); p++)
 			q->hit |= tri_packet_intersect(&b->packets[index + p], q->sc, &q->tr, q->h);
-		*tmax = q->h->t;
-		return false;
+	} else {
+		const uint32_t *ids = leaf_ids(b, index, count);
+		for (uint32_t i = 0; i < leaf_size(count); i++)
+			q->hit |= prim_intersect(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, q->h);
 	}
-	const uint32_t *ids = leaf_ids(b, index, count);
-	for (uint32_t i = 0; i < leaf_size(count); i++)
-		q->hit |= prim_intersect(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, q->h);
 	*tmax = q->h->t;
 	return false;
 }

@@ -79,7 +79,8 @@ struct lanes {
 /* tri_ray_hit()'s arithmetic in each lane, with h->t = tmax; it stops, as the scalar
  * test does, once no lane is left (most packets a ray reaches miss at the edge
  * functions). */
-static inline __attribute__((always_inline)) void test_lanes(const struct tri_packet *pk, const struct tri_ray *tr, double tmax, struct lanes *out)
+static inline __attribute__((always_inline)) void test_lanes(const struct tri_packet *pk, const struct tri_ray *tr,
+                                                             double tmax, struct lanes *out)
 {
 	int kx = tr->k[0], ky = tr->k[1], kz = tr->k[2];
 	v4d ox = v4d_set(vget(&tr->o, kx)), oy = v4d_set(vget(&tr->o, ky)), oz = v4d_set(vget(&tr->o, kz));
