@@ -2,11 +2,13 @@
  * directly as struct scene: spheres of random radii down to 1e-6, random triangles
  * including long thin ones, fans and grids that share edges and vertices, and planes.
  * For many rays (origins inside and outside the scene, on box faces and on vertices;
- * random, axis-aligned and +0/-0 directions) three answers must agree:
+ * random, axis-aligned and +0/-0 directions) these answers must agree:
  *   ref   a plain loop over every primitive, with no bounding box at all;
  *   none  bvh_build(ACCEL_NONE): one leaf, through the traversal code;
  *   bvh   bvh_build(ACCEL_BVH);
  *   grid  grid_build (render/grid.c), walked cell by cell.
+ * And one more must be bvh's to the bit (same_answer): the same tree over a copy of the
+ * scene reordered by bvh_reorder, whose triangle leaves are packets tested four at once.
  *
  * Same t, bitwise or within a few ulps? Each primitive's t is a pure function of the
  * primitive and the ray, and the closest hit is a minimum over those values, which
@@ -479,6 +481,70 @@ static void shape_of(const struct bvh *b, size_t *nodes, int *depth)
 	*depth = s.depth;
 }
 
+static void prim_geometry(const struct scene *sc, uint32_t prim, double g[9])
+{
+	memset(g, 0, 9 * sizeof *g);
+	uint32_t i = prim_index(prim);
+	if (prim_kind(prim) == PRIM_SPHERE) {
+		const struct sphere *s = &sc->spheres[i];
+		g[0] = s->center.x, g[1] = s->center.y, g[2] = s->center.z, g[3] = s->radius;
+	} else if (prim_kind(prim) == PRIM_TRIANGLE) {
+		for (int k = 0; k < 3; k++) {
+			struct vec3 v = sc->vertices[sc->triangles[i].v[k]];
+			g[3 * k] = v.x, g[3 * k + 1] = v.y, g[3 * k + 2] = v.z;
+		}
+	}
+}
+
+/* An answer of one BVH, kept to compare with another's: the hit, the geometry of the
+ * primitive hit, and the light through (0, tmax) and through the whole ray. */
+struct answer {
+	bool found;
+	struct hit h;
+	double geom[9];
+	struct vec3 pass[2];
+};
+
+static void answer_of(const struct bvh *bvh, const struct scene *sc, const struct ray *r, double tmax,
+                      struct answer *a)
+{
+	a->h = (struct hit){ .t = tmax, .prim = UINT32_MAX };
+	a->found = bvh_intersect(bvh, sc, r, &a->h);
+	prim_geometry(sc, a->h.prim, a->geom);
+	a->pass[0] = bvh_transmittance(bvh, sc, r, tmax);
+	a->pass[1] = bvh_transmittance(bvh, sc, r, INFINITY);
+}
+
+/* The same answer to the bit: the same geometry hit at the same t and barycentrics, the
+ * same light through. For the same tree before and after bvh_reorder, which tests the
+ * same primitives in the same order, the triangles of its leaves in packets whose test
+ * is the scalar one's lane by lane. */
+static bool same_answer(const struct answer *a, const struct answer *b)
+{
+	bool same = a->found == b->found && a->h.t == b->h.t;
+	if (same && a->found)
+		same = a->h.b1 == b->h.b1 && a->h.b2 == b->h.b2 && memcmp(a->geom, b->geom, sizeof a->geom) == 0;
+	for (int e = 0; e < 2; e++)
+		same = same && memcmp(&a->pass[e], &b->pass[e], sizeof a->pass[e]) == 0;
+	return same;
+}
+
+/* A copy of sc reordered, with bvh_reorder, for its tree's leaves in packets: its own
+ * spheres and triangles, the rest shared with sc. */
+static struct bvh *reordered_copy(const struct scene *sc, struct scene *copy)
+{
+	*copy = *sc;
+	copy->spheres = xmalloc(sc->nspheres * sizeof *copy->spheres);
+	copy->triangles = xmalloc(sc->ntriangles * sizeof *copy->triangles);
+	if (sc->nspheres) /* memcpy from NULL is undefined, even of nothing */
+		memcpy(copy->spheres, sc->spheres, sc->nspheres * sizeof *copy->spheres);
+	if (sc->ntriangles)
+		memcpy(copy->triangles, sc->triangles, sc->ntriangles * sizeof *copy->triangles);
+	struct bvh *bvh = bvh_build(copy, ACCEL_BVH);
+	bvh_reorder(bvh, copy);
+	return bvh;
+}
+
 /* Compares nrays random rays; at least min_hits of them (a fraction) must hit something,
  * or the comparison proves little. */
 static void compare_scene(const struct scene *sc, long nrays, double min_hits, bool lattice, double size,
@@ -486,6 +552,9 @@ static void compare_scene(const struct scene *sc, long nrays, double min_hits, b
 {
 	struct accels a;
 	accels_build(sc, &a);
+	struct scene copy;
+	struct bvh *packed = reordered_copy(sc, &copy);
+	long packed_bad = 0;
 	size_t nodes;
 	int depth;
 	shape_of(a.bvh, &nodes, &depth);
@@ -540,7 +609,19 @@ static void compare_scene(const struct scene *sc, long nrays, double min_hits, b
 		}
 		double tmax = irand(3) ? INFINITY : extent * lrand(1e-3, 2);
 		compare_ray(sc, &a, &r, tmax, what, &ty);
+		struct answer before, after;
+		answer_of(a.bvh, sc, &r, tmax, &before);
+		answer_of(packed, &copy, &r, tmax, &after);
+		if (!same_answer(&before, &after) && packed_bad++ < 5) {
+			fprintf(stderr, "%s: the reordered tree, with packets, answers otherwise: prim %#x t %a, then %#x t %a\n",
+			        what, before.h.prim, before.h.t, after.h.prim, after.h.t);
+			print_ray(what, &r, tmax);
+		}
 	}
+	CHECK(packed_bad == 0);
+	bvh_free(packed);
+	free(copy.spheres);
+	free(copy.triangles);
 	if (getenv("TEST_BVH_VERBOSE"))
 		fprintf(stderr, "%s: %ld rays, %ld hits; %ld exact ties named different primitives, %ld near ties "
 		        "(within %d ulps) differed\n", what, ty.rays, ty.hits, ty.ties, ty.near, NEAR_ULPS);
@@ -752,21 +833,6 @@ static void test_deep(void)
 }
 
 /* The geometry of a hit primitive, which a renumbering must not change. */
-static void prim_geometry(const struct scene *sc, uint32_t prim, double g[9])
-{
-	memset(g, 0, 9 * sizeof *g);
-	uint32_t i = prim_index(prim);
-	if (prim_kind(prim) == PRIM_SPHERE) {
-		const struct sphere *s = &sc->spheres[i];
-		g[0] = s->center.x, g[1] = s->center.y, g[2] = s->center.z, g[3] = s->radius;
-	} else if (prim_kind(prim) == PRIM_TRIANGLE) {
-		for (int k = 0; k < 3; k++) {
-			struct vec3 v = sc->vertices[sc->triangles[i].v[k]];
-			g[3 * k] = v.x, g[3 * k + 1] = v.y, g[3 * k + 2] = v.z;
-		}
-	}
-}
-
 /* bvh_reorder: with the scene's primitives renumbered in leaf order, and the triangles
  * of the leaves in packets, each ray still hits the same geometry at the same t and sees
  * the same shadow. */
@@ -788,36 +854,26 @@ static void test_reorder(void)
 	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
 	enum { NRAYS = 3000 };
 	static struct ray rays[NRAYS];
-	static struct hit before[NRAYS];
-	static bool found[NRAYS];
-	static double geom[NRAYS][9];
-	static struct vec3 pass[NRAYS];
+	static struct answer before[NRAYS];
 	for (int i = 0; i < NRAYS; i++) {
 		rays[i].o = rand_in_box(v3s(-2), v3s(2));
 		/* a third of the rays at the pairs */
 		rays[i].d = i % 3 ? rand_unit() : vunit(vsub(pair[i % NPAIRS], rays[i].o));
-		before[i] = (struct hit){ .t = INFINITY };
-		found[i] = bvh_intersect(bvh, &b.sc, &rays[i], &before[i]);
-		prim_geometry(&b.sc, before[i].prim, geom[i]);
-		pass[i] = bvh_transmittance(bvh, &b.sc, &rays[i], 3);
+		answer_of(bvh, &b.sc, &rays[i], 3, &before[i]);
 	}
 	bvh_reorder(bvh, &b.sc);
 	CHECK(b.sc.nspheres > 20 && b.sc.ntriangles > 1000);
 	/* the leaves of two triangles or more in packets, at most one for two triangles */
 	struct bvh_shape shape = bvh_shape(bvh);
 	CHECK(shape.packets > b.sc.ntriangles / 8 && shape.packets <= b.sc.ntriangles / 2);
-	long hits = 0;
+	long hits = 0, differ = 0;
 	for (int i = 0; i < NRAYS; i++) {
-		struct hit h = { .t = INFINITY };
-		bool f = bvh_intersect(bvh, &b.sc, &rays[i], &h);
-		double g[9];
-		prim_geometry(&b.sc, h.prim, g);
-		CHECK(f == found[i] && h.t == before[i].t);
-		CHECK(!f || (h.b1 == before[i].b1 && h.b2 == before[i].b2 && memcmp(g, geom[i], sizeof g) == 0));
-		struct vec3 p = bvh_transmittance(bvh, &b.sc, &rays[i], 3);
-		CHECK(p.x == pass[i].x && p.y == pass[i].y && p.z == pass[i].z);
-		hits += f;
+		struct answer after;
+		answer_of(bvh, &b.sc, &rays[i], 3, &after);
+		differ += !same_answer(&before[i], &after);
+		hits += after.found;
 	}
+	CHECK(differ == 0);
 	CHECK(hits > NRAYS / 4);
 	bvh_free(bvh);
 	scene_free(&b.sc);
