@@ -164,7 +164,7 @@ static uint32_t quad_hi(int i, int j) { return (uint32_t)(2 * (j * GRID + i) + 1
 
 /* ---- triangle packets ---- */
 
-/* A material that lets half the light through, for the shadow filters compared. */
+/* A material that lets part of the light through, for the shadow filters compared. */
 static void give_transmit(struct mini *m)
 {
 	m->sc.materials = xcalloc(1, sizeof *m->sc.materials);
