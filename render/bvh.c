@@ -32,7 +32,7 @@ enum {
 	MAX_DEPTH = 96,    /* below this every node is a leaf; traversal stacks are sized by it */
 	MIN_TASK = 4096,   /* primitives in a subtree worth a thread of its own */
 	TASKS_PER_TREE = 64, /* subtrees the top split aims for, so that threads share the work evenly */
-	REF_CHUNKS = 64,   /* pieces the making of the build records is cut into, for the same reason */
+	CHUNKS = 64,       /* pieces a pass over the primitives or the nodes is cut into, for the same reason */
 	MIN_PACKED = 2,    /* triangles in a leaf from which they go to packets: at most n / 2 packets */
 	BIG_TREE = 1 << 18, /* primitives from which a node visit is priced as a cache miss, see struct sah */
 };
@@ -218,6 +218,17 @@ struct kinds {
 	uint32_t n[2]; /* n[PRIM_SPHERE], n[PRIM_TRIANGLE] */
 };
 
+static inline void kinds_add(struct kinds *a, struct kinds b)
+{
+	a->n[0] += b.n[0];
+	a->n[1] += b.n[1];
+}
+
+static inline uint32_t kinds_total(struct kinds k)
+{
+	return k.n[0] + k.n[1];
+}
+
 static inline double leaf_price(const struct sah *sah, struct kinds k)
 {
 	return (double)k.n[PRIM_SPHERE] * sah->sphere + (double)leaf_packets(k.n[PRIM_TRIANGLE]) * sah->packet;
@@ -343,19 +354,17 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 		struct kinds cnt = { { 0 } };
 		for (int i = nbins - 1; i > 0; i--) {
 			vbox_add(&acc, bins[axis][i].lo, bins[axis][i].hi);
-			cnt.n[0] += counts[axis][i].n[0];
-			cnt.n[1] += counts[axis][i].n[1];
+			kinds_add(&cnt, counts[axis][i]);
 			right_area[i] = vbox_area(acc);
 			right_price[i] = leaf_price(sah, cnt);
-			right_n[i] = cnt.n[0] + cnt.n[1];
+			right_n[i] = kinds_total(cnt);
 		}
 		acc = vbox_empty();
 		cnt = (struct kinds){ { 0 } };
 		for (int i = 1; i < nbins; i++) {
 			vbox_add(&acc, bins[axis][i - 1].lo, bins[axis][i - 1].hi);
-			cnt.n[0] += counts[axis][i - 1].n[0];
-			cnt.n[1] += counts[axis][i - 1].n[1];
-			if (cnt.n[0] + cnt.n[1] == 0 || right_n[i] == 0)
+			kinds_add(&cnt, counts[axis][i - 1]);
+			if (kinds_total(cnt) == 0 || right_n[i] == 0)
 				continue;
 			double cost = sah->node + (vbox_area(acc) * leaf_price(sah, cnt) + right_area[i] * right_price[i]) / parent_area;
 			if (cost < best_cost) {
@@ -666,6 +675,19 @@ static void make_wide(struct bvh *bvh, struct bin_node *bin, bool parallel)
 	free(bin);
 }
 
+/* The pieces a pass over n items is cut into for parallel_for (one when n is small),
+ * and the items [lo, hi) of piece c. */
+static size_t chunks_of(size_t n)
+{
+	return n > MIN_TASK ? CHUNKS : 1;
+}
+
+static void chunk_items(size_t n, size_t nchunks, size_t c, size_t *lo, size_t *hi)
+{
+	*lo = n * c / nchunks;
+	*hi = n * (c + 1) / nchunks;
+}
+
 /* The build record of primitive k of sc (nth_prim's numbering). */
 static void make_ref(const struct scene *sc, size_t k, struct build_ref *r)
 {
@@ -694,7 +716,9 @@ static void make_chunk(void *ctx, size_t c)
 {
 	struct ref_chunks *rc = ctx;
 	struct bounds bd = { vbox_empty(), vbox_empty() };
-	for (size_t k = rc->n * c / rc->nchunks; k < rc->n * (c + 1) / rc->nchunks; k++) {
+	size_t lo, hi;
+	chunk_items(rc->n, rc->nchunks, c, &lo, &hi);
+	for (size_t k = lo; k < hi; k++) {
 		make_ref(rc->sc, k, &rc->refs[k]);
 		bounds_add(&bd, &rc->refs[k]);
 	}
@@ -713,8 +737,8 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	/* the records in chunks, on all threads where the build will use them */
-	struct bounds chunk_bounds[REF_CHUNKS];
-	struct ref_chunks rc = { sc, b.refs, n, n > MIN_TASK ? REF_CHUNKS : 1, chunk_bounds };
+	struct bounds chunk_bounds[CHUNKS];
+	struct ref_chunks rc = { sc, b.refs, n, chunks_of(n), chunk_bounds };
 	parallel_for(rc.nchunks, make_chunk, &rc);
 	struct bounds root = { vbox_empty(), vbox_empty() };
 	for (size_t c = 0; c < rc.nchunks; c++) {
@@ -785,18 +809,12 @@ struct packing {
 	size_t *first; /* chunk c's first packet (its count, until the sum) */
 };
 
-static void packing_nodes(const struct packing *pk, size_t c, size_t *lo, size_t *hi)
-{
-	*lo = pk->b->nnodes * c / pk->nchunks;
-	*hi = pk->b->nnodes * (c + 1) / pk->nchunks;
-}
-
 static void count_packets(void *ctx, size_t c)
 {
 	struct packing *pk = ctx;
 	const struct bvh *b = pk->b;
 	size_t lo, hi, n = c == 0 ? packets_of(b->root.index, b->root.count) : 0;
-	packing_nodes(pk, c, &lo, &hi);
+	chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		for (int k = 0; k < WIDTH; k++)
 			n += packets_of(b->nodes[i].index[k], b->nodes[i].count[k]);
@@ -810,7 +828,7 @@ static void fill_packets(void *ctx, size_t c)
 	size_t lo, hi, next = pk->first[c];
 	if (c == 0)
 		pack_leaf(b, pk->sc, &b->root.index, &b->root.count, &next);
-	packing_nodes(pk, c, &lo, &hi);
+	chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		for (int k = 0; k < WIDTH; k++)
 			pack_leaf(b, pk->sc, &b->nodes[i].index[k], &b->nodes[i].count[k], &next);
@@ -818,8 +836,8 @@ static void fill_packets(void *ctx, size_t c)
 
 static void pack_leaves(struct bvh *b, const struct scene *sc)
 {
-	size_t first[REF_CHUNKS];
-	struct packing pk = { b, sc, b->nnodes > MIN_TASK ? REF_CHUNKS : 1, first };
+	size_t first[CHUNKS];
+	struct packing pk = { b, sc, chunks_of(b->nnodes), first };
 	parallel_for(pk.nchunks, count_packets, &pk);
 	size_t n = 0;
 	for (size_t c = 0; c < pk.nchunks; c++) {
