@@ -16,10 +16,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "accel.h"
 #include "camera.h"
+#include "clock.h"
 #include "diag.h"
 #include "load.h"
 #include "lower.h"
@@ -28,13 +28,6 @@
 #include "xalloc.h"
 
 enum { REPEATS = 5 }; /* the median of this many passes over the rays */
-
-static double now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 struct job {
 	const struct scene *sc;
@@ -86,7 +79,7 @@ static double pass(const struct scene *sc, RTCScene rtc, bool embree, const stru
 {
 	struct job jobs[2];
 	pthread_t tid[2];
-	double t0 = now();
+	double t0 = clock_now();
 	for (int k = 0; k < threads; k++) {
 		jobs[k] = (struct job){ sc, rtc, embree, rays, n * k / threads, n * (k + 1) / threads - n * k / threads, 0 };
 		if (pthread_create(&tid[k], NULL, trace_some, &jobs[k]) != 0) {
@@ -99,7 +92,7 @@ static double pass(const struct scene *sc, RTCScene rtc, bool embree, const stru
 		pthread_join(tid[k], NULL);
 		*hits += jobs[k].hits;
 	}
-	return (double)n / (now() - t0) * 1e-6;
+	return (double)n / (clock_now() - t0) * 1e-6;
 }
 
 /* Mrays/s of scn (rate[0]) and Embree (rate[1]) on threads threads: the median of
@@ -223,12 +216,12 @@ static int compare(RTCDevice dev, const char *path, bool scaling)
 		return 1;
 	}
 	sc.nplanes = 0;
-	double t0 = now();
+	double t0 = clock_now();
 	accel_build(&sc, ACCEL_BVH);
-	double scn_build = now() - t0;
-	t0 = now();
+	double scn_build = clock_now() - t0;
+	t0 = clock_now();
 	RTCScene rtc = embree_scene(dev, &sc);
-	double rtc_build = now() - t0;
+	double rtc_build = clock_now() - t0;
 	size_t n;
 	struct ray *rays = make_rays(&sc, &n);
 

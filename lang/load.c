@@ -4,10 +4,10 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "arena.h"
 #include "check.h"
+#include "clock.h"
 #include "eval.h"
 #include "lang.h"
 #include "scene_desc.h"
@@ -40,47 +40,22 @@ static int read_stdin(char **text, uint32_t *len)
 	return 0;
 }
 
-static double clock_seconds(clockid_t clock)
-{
-	struct timespec ts;
-	clock_gettime(clock, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-static double now(void)
-{
-	return clock_seconds(CLOCK_MONOTONIC);
-}
-
-/* For the three readings around each of a million statements: the exact clock would take
- * several percent of the load. The coarse one moves in ticks (4 ms), but a statement
- * starts at no particular point of a tick, so the sum of many short readings is as likely
- * to be over as under: right on average, and right to a tick for a long statement. */
-static double now_coarse(void)
-{
-#ifdef CLOCK_MONOTONIC_COARSE
-	return clock_seconds(CLOCK_MONOTONIC_COARSE);
-#else
-	return now();
-#endif
-}
-
 /* The whole file parsed, then checked, then evaluated: every diagnostic of each phase
  * before the next phase runs, which decides which of them count against the limit on
  * errors (diag.h), and gives "defined after its use" notes the whole file. */
 static void load_in_phases(struct diag *d, const struct source *src, struct scene_desc *out, struct load_times *t)
 {
-	double t0 = now();
+	double t0 = clock_now();
 	struct arena *a = arena_new();
 	struct ast_list stmts = lang_parse(a, a, d, src);
-	double t1 = now();
+	double t1 = clock_now();
 	t->parse += t1 - t0;
 	unsigned nslots = lang_check(a, d, src, &stmts); /* parses included files too */
-	double t2 = now();
+	double t2 = clock_now();
 	t->check += t2 - t1;
 	if (d->errors == 0)
 		lang_eval(d, &stmts, nslots, out);
-	t->eval += now() - t2;
+	t->eval += clock_now() - t2;
 	arena_free(a);
 }
 
@@ -98,10 +73,14 @@ struct stream {
 	double parse_s, check_s, eval_s; /* by the coarse clock: how the time divides */
 };
 
-/* Adds the coarse time since the last reading to *phase. */
+/* Adds the coarse time since the last reading to *phase. The coarse clock, for the three
+ * readings around each of a million statements: the exact one would take several percent
+ * of the load. It moves in ticks, but a statement starts at no particular point of a
+ * tick, so the sum of many short readings is as likely to be over as under: right on
+ * average, and right to a tick for a long statement. */
 static void lap(struct stream *st, double *phase)
 {
-	double t = now_coarse();
+	double t = clock_now_coarse();
 	*phase += t - st->last;
 	st->last = t;
 }
@@ -125,9 +104,9 @@ static bool stream_statement(void *arg, struct ast *stmt)
  * of the scene and d what the first statements said. */
 static bool load_streaming(struct diag *d, const struct source *src, struct scene_desc *out, struct load_times *t)
 {
-	double t0 = now();
+	double t0 = clock_now();
 	struct arena *nodes = arena_new(), *keep = arena_new();
-	struct stream st = { .d = d, .start = diag_mark(d), .last = now_coarse() };
+	struct stream st = { .d = d, .start = diag_mark(d), .last = clock_now_coarse() };
 	st.checker = checker_new(nodes, keep, d, src, NULL);
 	st.ev = evaluator_new(d, out);
 	lang_parse_each(nodes, keep, d, src, stream_statement, &st);
@@ -140,7 +119,7 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 	/* the exact clock says how much time there was, the coarse one how it divides (all
 	 * parse when no tick passed) */
 	lap(&st, &st.parse_s);
-	double total = now() - t0, ticked = st.parse_s + st.check_s + st.eval_s;
+	double total = clock_now() - t0, ticked = st.parse_s + st.check_s + st.eval_s;
 	t->parse += ticked > 0 ? total * st.parse_s / ticked : total;
 	t->check += ticked > 0 ? total * st.check_s / ticked : 0;
 	t->eval += ticked > 0 ? total * st.eval_s / ticked : 0;
@@ -151,7 +130,7 @@ enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_
                                  struct load_times *times)
 {
 	struct load_times t = { 0 };
-	double t0 = now();
+	double t0 = clock_now();
 	bool from_stdin = strcmp(path, "-") == 0;
 	scene_desc_init(out);
 	char *text;
@@ -164,7 +143,7 @@ enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_
 	}
 	const struct source *src = diag_add_source(d, from_stdin ? "<stdin>" : path, text, len, NULL,
 	                                           (struct span){ 0, 0 });
-	t.parse = now() - t0;
+	t.parse = clock_now() - t0;
 	/* Most scenes have no error and load one statement at a time. One that has is loaded
 	 * again in phases, from the start, so that what it says is exactly what the phases
 	 * say; the statements before the first error are read twice. */

@@ -7,9 +7,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "camera.h"
+#include "clock.h"
 #include "shape.h"
 #include "image.h"
 #include "memory.h"
@@ -35,13 +35,6 @@ struct lowering {
 	double mesh_seconds;
 	bool too_big;                  /* a mesh file or the sky image needs more memory than there is */
 };
-
-static double now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static struct vec3 xform_point(const struct xform *x, struct vec3 p)
 {
@@ -211,11 +204,11 @@ static const struct mesh_data *mesh_file(struct lowering *lw, const struct mesh_
 	memset(entry, 0, sizeof *entry);
 	entry->path = m->path;
 	char err[512];
-	double t0 = now();
+	double t0 = clock_now();
 	int rc = mesh_import(m->path, &entry->data, err, sizeof err);
 	entry->ok = rc == 0;
 	lw->too_big = lw->too_big || rc == ENOMEM;
-	lw->mesh_seconds += now() - t0;
+	lw->mesh_seconds += clock_now() - t0;
 	if (!entry->ok)
 		diag_error(lw->diag, m->file_span, "%s", err);
 	return entry->ok ? &entry->data : NULL;
@@ -493,9 +486,9 @@ enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struc
 	for (size_t i = 0; i < desc->nobjects && !too_big; i++)
 		lower_object(&lw, &desc->objects[i]);
 	times->load_meshes = lw.mesh_seconds;
-	double t0 = now();
+	double t0 = clock_now();
 	lower_sky(&lw);
-	times->load_images = now() - t0;
+	times->load_images = clock_now() - t0;
 
 	static const enum sample_kind kinds[PATTERN_COUNT] = {
 		[PATTERN_CENTER] = SAMPLE_CENTER, [PATTERN_GRID] = SAMPLE_GRID, [PATTERN_RANDOM] = SAMPLE_RANDOM,

@@ -14,6 +14,7 @@
 
 #include "camera.h"
 #include "cleanup.h"
+#include "clock.h"
 #include "sampler.h"
 #include "xalloc.h"
 
@@ -146,13 +147,6 @@ static void *work(void *arg)
 	return NULL;
 }
 
-static double now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 static void show_progress(int done, int total, double elapsed)
 {
 	enum { WIDTH = 30 };
@@ -202,12 +196,12 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 		return -1;
 	}
 	if (opt->progress) {
-		double t0 = now();
+		double t0 = clock_now();
 		while (atomic_load(&job.done_tiles) < job.ntiles) {
-			show_progress(atomic_load(&job.done_tiles), job.ntiles, now() - t0);
+			show_progress(atomic_load(&job.done_tiles), job.ntiles, clock_now() - t0);
 			nanosleep(&(struct timespec){ 0, 200 * 1000 * 1000 }, NULL);
 		}
-		show_progress(job.ntiles, job.ntiles, now() - t0);
+		show_progress(job.ntiles, job.ntiles, clock_now() - t0);
 		fputc('\n', stderr);
 	}
 	memset(st, 0, sizeof *st);

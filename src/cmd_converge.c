@@ -12,12 +12,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "atomic.h"
 #include "accel.h"
 #include "cli.h"
+#include "clock.h"
 #include "diag.h"
 #include "image.h"
 #include "imgdiff.h"
@@ -93,13 +93,6 @@ struct run {
 /* The adaptive series' first target; each next one is half the one before. */
 #define ADAPTIVE_FIRST 0.02
 enum { ADAPTIVE_STEPS = 5 };
-
-static double now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static bool positive_number(const char *s, double *out)
 {
@@ -216,12 +209,12 @@ static int render_with(struct run *r, struct sampling s, double *seconds, struct
 {
 	r->sc.sampling = s;
 	struct render_options ro = { .threads = r->threads, .x1 = r->sc.camera.width, .y1 = r->sc.camera.height };
-	double t0 = now();
+	double t0 = clock_now();
 	if (render_image(&r->sc, &ro, r->img, st) != 0) {
 		fprintf(stderr, "scn: cannot start the render threads\n");
 		return EXIT_RENDER;
 	}
-	*seconds = now() - t0;
+	*seconds = clock_now() - t0;
 	clip(r->img);
 	return 0;
 }
@@ -682,7 +675,7 @@ static int run_points(struct run *r)
 		if (best < 0)
 			return 0;
 		struct series *s = &r->series[best];
-		if (now() - r->t_start + best_t > r->a->budget) {
+		if (clock_now() - r->t_start + best_t > r->a->budget) {
 			skip_note(r, s, best_t);
 			s->stopped = true;
 			continue;
@@ -731,7 +724,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	if ((a.csv && !writable_place(a.csv)) || (a.plot && !writable_place(a.plot)))
 		return EXIT_IO;
 
-	struct run r = { .a = &a, .t_start = now() };
+	struct run r = { .a = &a, .t_start = clock_now() };
 	struct diag d;
 	diag_init(&d, stderr);
 	struct scene_desc desc;
@@ -762,15 +755,15 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 		diag_flush(&d);
 		goto done;
 	}
-	double t0 = now();
+	double t0 = clock_now();
 	rc = (int)lang_lower(&d, &desc, &r.sc, &wt, (int64_t)images);
-	double lower_s = now() - t0;
+	double lower_s = clock_now() - t0;
 	diag_flush(&d);
 	if (rc)
 		goto done;
-	t0 = now();
+	t0 = clock_now();
 	accel_build(&r.sc, ACCEL_BVH);
-	double bvh_s = now() - t0;
+	double bvh_s = clock_now() - t0;
 	double fixed = lt.parse + lt.check + lt.eval + lower_s + bvh_s;
 	long cores = sysconf(_SC_NPROCESSORS_ONLN);
 	r.threads = a.threads > 0 ? (int)a.threads : cores > 0 ? (int)cores : 1;
@@ -844,7 +837,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	if (pov->last_seconds > 0)
 		printf("POV-Ray's start-up and parse took %.3f s of its last run (its wall time less its Trace Time)\n",
 		       pov->pov_fixed);
-	printf("total: %.1f s\n", now() - r.t_start);
+	printf("total: %.1f s\n", clock_now() - r.t_start);
 	fflush(stdout);
 
 	char title[256], subtitle[512];

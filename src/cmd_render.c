@@ -7,11 +7,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "accel.h"
 #include "cli.h"
+#include "clock.h"
 #include "diag.h"
 #include "image.h"
 #include "load.h"
@@ -30,13 +30,6 @@ struct render_args {
 	bool region;
 	long x0, y0, x1, y1;
 };
-
-static double now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static int parse_args(const struct command *self, int argc, char **argv, struct render_args *a)
 {
@@ -232,9 +225,9 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	diag_flush(&d);
 	if (rc)
 		goto done;
-	double t0 = now();
+	double t0 = clock_now();
 	accel_build(&sc, a.accel);
-	double bvh_s = now() - t0;
+	double bvh_s = clock_now() - t0;
 
 	ro.progress = a.quiet ? false : a.progress >= 0 ? a.progress : isatty(2);
 	img = image_new(ro.x1 - ro.x0, ro.y1 - ro.y0);
@@ -244,17 +237,17 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		goto done;
 	}
 	struct ray_stats st;
-	t0 = now();
+	t0 = clock_now();
 	if (render_image(&sc, &ro, img, &st) != 0) {
 		fprintf(stderr, "scn: cannot start the render threads\n");
 		rc = EXIT_RENDER;
 		goto done;
 	}
-	double render_s = now() - t0;
+	double render_s = clock_now() - t0;
 	if (st.nonfinite)
 		fprintf(stderr, "scn: warning: %llu radiance values were not finite and were left out of the image\n",
 		        (unsigned long long)st.nonfinite);
-	t0 = now();
+	t0 = clock_now();
 	file_open = false;
 	int e = image_file_commit(&file, img, err, sizeof err);
 	if (e != 0) {
@@ -263,7 +256,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		goto done;
 	}
 	if (a.stats)
-		print_stats(&lt, &wt, bvh_s, render_s, now() - t0, &sc, &st);
+		print_stats(&lt, &wt, bvh_s, render_s, clock_now() - t0, &sc, &st);
 	if (!a.quiet) {
 		fprintf(stderr, "scn: wrote %s: %d x %d, %d sample%s per pixel, rendered in %.2f s", out, img->width,
 		        img->height, sc.sampling.count, sc.sampling.count == 1 ? "" : "s", render_s);

@@ -11,18 +11,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cleanup.h"
+#include "clock.h"
 #include "xalloc.h"
-
-static double now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* The path of an executable named name on PATH, or NULL; malloc'd. */
 static char *find_program(const char *name)
@@ -176,9 +169,9 @@ int povray_render(const struct povray *pv, const char *pov_name, const char *aa,
 	argv[n] = NULL;
 	*out = (struct povray_render){ .trace = -1 };
 	char *log_path = povray_file(pv, log), *png_path = povray_file(pv, png);
-	double t0 = now();
+	double t0 = clock_now();
 	int status = run_child(pv->dir, argv, log);
-	out->seconds = now() - t0;
+	out->seconds = clock_now() - t0;
 	free(words);
 	int rc = 0;
 	if (status != 0) {
