@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "tri_packet.h"
+#include "v4d.h"
 #include "xalloc.h"
 
 enum {
@@ -985,12 +986,9 @@ struct box_ray {
  * FLT_MAX rounds to FLT_MAX or to inf, and one below never rounds past it. */
 static void box_ray_init(const struct ray *r, struct box_ray *s)
 {
-	typedef double v4d __attribute__((vector_size(32)));
-	typedef long long v4l __attribute__((vector_size(32)));
-	const v4l abs_mask = ~((v4l){ 1, 1, 1, 1 } << 63);
 	v4d d = { r->d.x, r->d.y, r->d.z, 1 }, o = { r->o.x, r->o.y, r->o.z, 0 };
 	v4d inv = 1 / d;
-	v4d m = (v4d)((v4l)o & abs_mask) * ROUND_MARGIN + FLT_TRUE_MIN;
+	v4d m = V4D_ABS(o) * ROUND_MARGIN + FLT_TRUE_MIN;
 	v4f o_down = v4min(__builtin_convertvector(o - m, v4f), v4set(FLT_MAX));
 	v4f o_up = v4max(__builtin_convertvector(o + m, v4f), v4set(-FLT_MAX));
 	/* near and far by the sign bit of d (-0 counts as negative), not by comparing the
@@ -998,7 +996,7 @@ static void box_ray_init(const struct ray *r, struct box_ray *s)
 	v4f d_f = __builtin_convertvector(d, v4f), neg = v4signs(d_f);
 	v4f inv_f = __builtin_convertvector(inv, v4f);
 	/* a zero component keeps a finite |1/d| on the entry side, with the sign of 1/d */
-	v4f inv_in = v4min(__builtin_convertvector((v4d)((v4l)inv & abs_mask) * (1 - ROUND_MARGIN), v4f),
+	v4f inv_in = v4min(__builtin_convertvector(V4D_ABS(inv) * (1 - ROUND_MARGIN), v4f),
 	                   v4set(FLT_MAX));
 	inv_in = v4pick(v4signs(inv_f), v4sub(v4set(0), inv_in), inv_in);
 	vray_lanes(v4pick(neg, o_down, o_up), s->o_near);

@@ -7,7 +7,7 @@ render_libscnrender_a_SOURCES = \
 	%D%/camera.c %D%/camera.h \
 	%D%/render.c %D%/render.h \
 	%D%/scene.c %D%/scene.h \
-	%D%/shape.c %D%/shape.h %D%/tri_packet.c %D%/tri_packet.h \
+	%D%/shape.c %D%/shape.h %D%/tri_packet.c %D%/tri_packet.h %D%/v4d.h \
 	%D%/trace.c %D%/trace.h \
 	%D%/vec.h
 # what a program needs to link the renderer (after lang/libscnlang.a, if it uses it)

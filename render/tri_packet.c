@@ -11,12 +11,9 @@
 #include <immintrin.h>
 #endif
 
-typedef double v4d __attribute__((vector_size(32)));
-typedef long long v4l __attribute__((vector_size(32)));
+#include "v4d.h"
 
-/* Without AVX, GCC warns that these 32-byte vectors are returned differently from how an
- * AVX build would return them: no call with them crosses this file, so it does not
- * matter. As arguments they go by pointer, where GCC's note cannot be turned off. */
+/* these functions return a v4d: see v4d.h */
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 static inline v4d v4d_load(const double p[PACKET_LANES])
@@ -39,16 +36,11 @@ static inline v4d v4d_set(double x)
 #define LANE_BITS(m) ((int)(((m)[0] & 1) | ((m)[1] & 2) | ((m)[2] & 4) | ((m)[3] & 8)))
 #endif
 
-static inline v4d lanes_abs(const v4d *a)
-{
-	return (v4d)((v4l)*a & ~((v4l){ 1, 1, 1, 1 } << 63));
-}
-
 /* max_abs3() of shape.c over the three vectors of v, lane by lane: the same comparisons,
  * so the same choices */
 static inline v4d lanes_max_abs3(const v4d v[3])
 {
-	v4d a = lanes_abs(&v[0]), b = lanes_abs(&v[1]), c = lanes_abs(&v[2]);
+	v4d a = V4D_ABS(v[0]), b = V4D_ABS(v[1]), c = V4D_ABS(v[2]);
 	v4l ab = a > b;
 	v4d m = (v4d)((ab & (v4l)a) | (~ab & (v4l)b));
 	v4l mc = m > c;
@@ -112,7 +104,7 @@ static inline __attribute__((always_inline)) void test_lanes(const struct tri_pa
 	v4d inv = 1 / det;
 	v4d t = tscaled * inv;
 	v4d max_x = lanes_max_abs3(x), max_y = lanes_max_abs3(y), max_z = lanes_max_abs3(z);
-	v4d delta_t = TRI_DELTA_T(max_x, max_y, max_z, lanes_max_abs3(e), lanes_abs(&inv));
+	v4d delta_t = TRI_DELTA_T(max_x, max_y, max_z, lanes_max_abs3(e), V4D_ABS(inv));
 	out->hit &= LANE_BITS((t > delta_t) & (t < tmax));
 	if (!out->hit)
 		return;
