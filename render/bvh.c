@@ -802,26 +802,39 @@ static size_t packets_of(uint32_t index, uint32_t count)
 	return packs(index, count) ? leaf_packets(leaf_size(count)) : 0;
 }
 
-/* The direct leaves' triangles into packets, leaf by leaf in the nodes' order, on every
- * thread: the nodes cut into chunks (the first with the root), each chunk's packets
- * counted, then filled from where the chunks before it end. */
+/* The leaves made direct where they can be (direct_leaf()) and their triangles put in
+ * packets, leaf by leaf in the nodes' order, on every thread: the nodes cut into chunks
+ * (the first with the root), each chunk's leaves made direct and its packets counted,
+ * then filled from where the chunks before it end. */
 struct packing {
 	struct bvh *b;
 	const struct scene *sc;
 	size_t nchunks;
-	size_t *first; /* chunk c's first packet (its count, until the sum) */
+	size_t *first;     /* chunk c's first packet (its count, until the sum) */
+	bool *ids_needed;  /* chunk c has a leaf that still needs its ids */
 };
+
+/* Leaf (index, count) made direct if it can be, its packets added to *n. */
+static void count_leaf(const struct bvh *b, uint32_t *index, uint32_t *count, size_t *n, bool *ids_needed)
+{
+	*ids_needed |= direct_leaf(b, index, count);
+	*n += packets_of(*index, *count);
+}
 
 static void count_packets(void *ctx, size_t c)
 {
 	struct packing *pk = ctx;
-	const struct bvh *b = pk->b;
-	size_t lo, hi, n = c == 0 ? packets_of(b->root.index, b->root.count) : 0;
+	struct bvh *b = pk->b;
+	size_t lo, hi, n = 0;
+	bool ids_needed = false;
+	if (c == 0)
+		count_leaf(b, &b->root.index, &b->root.count, &n, &ids_needed);
 	chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		for (int k = 0; k < WIDTH; k++)
-			n += packets_of(b->nodes[i].index[k], b->nodes[i].count[k]);
+			count_leaf(b, &b->nodes[i].index[k], &b->nodes[i].count[k], &n, &ids_needed);
 	pk->first[c] = n;
+	pk->ids_needed[c] = ids_needed;
 }
 
 static void fill_packets(void *ctx, size_t c)
@@ -840,13 +853,19 @@ static void fill_packets(void *ctx, size_t c)
 static void pack_leaves(struct bvh *b, const struct scene *sc)
 {
 	size_t first[CHUNKS];
-	struct packing pk = { b, sc, chunks_of(b->nnodes), first };
+	bool ids_needed[CHUNKS], any_ids = false;
+	struct packing pk = { b, sc, chunks_of(b->nnodes), first, ids_needed };
 	parallel_for(pk.nchunks, count_packets, &pk);
 	size_t n = 0;
 	for (size_t c = 0; c < pk.nchunks; c++) {
 		size_t count = first[c];
 		first[c] = n;
 		n += count;
+		any_ids |= ids_needed[c];
+	}
+	if (!any_ids) {
+		free(b->prims);
+		b->prims = NULL;
 	}
 	if (n == 0)
 		return;
@@ -855,34 +874,65 @@ static void pack_leaves(struct bvh *b, const struct scene *sc)
 	parallel_for(pk.nchunks, fill_packets, &pk);
 }
 
+/* The scene's primitives copied in leaf order, on every thread: prims cut into chunks,
+ * each chunk's spheres and triangles counted, then copied from where the chunks before
+ * it end, each entry of prims renumbered to its primitive's new place. */
+struct reordering {
+	struct bvh *b;
+	const struct scene *sc;       /* the primitives where they were */
+	struct sphere *spheres;
+	struct triangle *triangles;
+	size_t nchunks;
+	struct kinds *first;          /* chunk c's first sphere and triangle (its counts, until the sum) */
+};
+
+static void count_kinds(void *ctx, size_t c)
+{
+	struct reordering *ro = ctx;
+	struct kinds k = { { 0, 0 } };
+	size_t lo, hi;
+	chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
+	for (size_t i = lo; i < hi; i++)
+		k.n[prim_kind(ro->b->prims[i])]++;
+	ro->first[c] = k;
+}
+
+static void copy_chunk(void *ctx, size_t c)
+{
+	struct reordering *ro = ctx;
+	uint32_t *prims = ro->b->prims;
+	struct kinds next = ro->first[c];
+	size_t lo, hi;
+	chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
+	for (size_t i = lo; i < hi; i++) {
+		enum prim_kind kind = prim_kind(prims[i]);
+		uint32_t k = prim_index(prims[i]), to = next.n[kind]++;
+		if (kind == PRIM_SPHERE)
+			ro->spheres[to] = ro->sc->spheres[k];
+		else
+			ro->triangles[to] = ro->sc->triangles[k];
+		prims[i] = prim_id(kind, to);
+	}
+}
+
 void bvh_reorder(struct bvh *b, struct scene *sc)
 {
-	struct sphere *spheres = sc->nspheres ? xmalloc(sc->nspheres * sizeof *spheres) : NULL;
-	struct triangle *triangles = sc->ntriangles ? xmalloc(sc->ntriangles * sizeof *triangles) : NULL;
-	uint32_t ns = 0, nt = 0;
-	for (size_t i = 0; i < b->nprims; i++) {
-		uint32_t k = prim_index(b->prims[i]);
-		if (prim_kind(b->prims[i]) == PRIM_SPHERE) {
-			spheres[ns] = sc->spheres[k];
-			b->prims[i] = prim_id(PRIM_SPHERE, ns++);
-		} else {
-			triangles[nt] = sc->triangles[k];
-			b->prims[i] = prim_id(PRIM_TRIANGLE, nt++);
-		}
+	struct kinds first[CHUNKS];
+	struct reordering ro = { b, sc, sc->nspheres ? xmalloc(sc->nspheres * sizeof *ro.spheres) : NULL,
+		                 sc->ntriangles ? xmalloc(sc->ntriangles * sizeof *ro.triangles) : NULL,
+		                 chunks_of(b->nprims), first };
+	parallel_for(ro.nchunks, count_kinds, &ro);
+	struct kinds sum = { { 0, 0 } };
+	for (size_t c = 0; c < ro.nchunks; c++) {
+		struct kinds count = first[c];
+		first[c] = sum;
+		kinds_add(&sum, count);
 	}
+	parallel_for(ro.nchunks, copy_chunk, &ro);
 	free(sc->spheres);
 	free(sc->triangles);
-	sc->spheres = spheres;
-	sc->triangles = triangles;
-
-	bool ids_needed = direct_leaf(b, &b->root.index, &b->root.count);
-	for (size_t i = 0; i < b->nnodes; i++)
-		for (int c = 0; c < WIDTH; c++)
-			ids_needed |= direct_leaf(b, &b->nodes[i].index[c], &b->nodes[i].count[c]);
-	if (!ids_needed) {
-		free(b->prims);
-		b->prims = NULL;
-	}
+	sc->spheres = ro.spheres;
+	sc->triangles = ro.triangles;
 	pack_leaves(b, sc);
 }
 
