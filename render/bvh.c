@@ -35,7 +35,6 @@ enum {
 	TASKS_PER_TREE = 64, /* subtrees the top split aims for, so that threads share the work evenly */
 	CHUNKS = 64,       /* pieces a pass over the primitives or the nodes is cut into, for the same reason */
 	MIN_PACKED = 2,    /* triangles in a leaf from which they go to packets: at most n / 2 packets */
-	BIG_TREE = 1 << 18, /* primitives from which lower nodes miss the caches: see struct sah, prefetch_nodes() */
 };
 
 /* Four floats, with SSE where there is SSE (every x86-64) and GCC's generic vectors
@@ -150,7 +149,7 @@ struct bvh {
 	struct tri_packet *packets; /* of the LEAF_PACKED leaves, in leaf order */
 	size_t npackets;
 	int depth;
-	bool big;                  /* BIG_TREE primitives or more: see prefetch_nodes() */
+	bool big;                  /* BVH_BIG_TREE primitives or more: see prefetch_nodes() */
 };
 
 /* A primitive's bounds, already rounded outward to float, and the centre of its exact
@@ -204,7 +203,7 @@ struct task {
  * to four triangles (tri_packet.h), a leaf's triangles being priced by the packets they
  * fill, so that leaves come in fours. In small trees a node visit and a sphere test cost
  * 1 and a packet 2 (a packet at 1 cost the bunny's rays 3% more instructions). In a tree
- * of BIG_TREE primitives or more, whose lower nodes no longer stay in cache, a node
+ * of BVH_BIG_TREE primitives or more, whose lower nodes no longer stay in cache, a node
  * visit costs a packet test, a cache miss each: there the leaves grow and the node array
  * shrinks (1M-triangle bunny: 3.8 triangles a packet, 12 MB of nodes; 54 MB at a node
  * price of 1 and one triangle a unit). The
@@ -732,7 +731,7 @@ struct bvh *bvh_build(const struct scene *sc, enum accel kind)
 	struct bvh *bvh = xcalloc(1, sizeof *bvh);
 	size_t n = sc->nspheres + sc->ntriangles;
 	bvh->nprims = n;
-	bvh->big = n >= BIG_TREE;
+	bvh->big = n >= BVH_BIG_TREE;
 	if (n == 0)
 		return bvh;
 	struct builder b = { .brute = kind == ACCEL_NONE };
