@@ -1,6 +1,7 @@
 /* xalloc.c: allocation that never returns NULL. Callers never check; running out of
  * memory ends the program with exit status 4, as LANGUAGE.md section 8 specifies, after
  * removing the temporary files of unfinished output (cleanup.h). */
+#define _DEFAULT_SOURCE 1 /* madvise's MADV_HUGEPAGE, beside the build's _XOPEN_SOURCE */
 #include "xalloc.h"
 
 #include "cleanup.h"
@@ -10,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 /* SCN_ALLOC_LIMIT=BYTES makes every allocation larger than BYTES fail as if memory had
  * run out: the test suite's way to reach this path in a render, which the up-front
@@ -64,6 +66,20 @@ void *xaligned_alloc(size_t align, size_t size)
 	void *p = size <= alloc_limit() ? aligned_alloc(align, size ? size : align) : NULL;
 	if (!p)
 		out_of_memory(size);
+	return p;
+}
+
+void *xbig_alloc(size_t size)
+{
+	if (size < XBIG_PAGE)
+		return xaligned_alloc(64, (size + 63) / 64 * 64);
+	if (size > SIZE_MAX - XBIG_PAGE)
+		out_of_memory(SIZE_MAX);
+	size_t whole = (size + XBIG_PAGE - 1) / XBIG_PAGE * XBIG_PAGE;
+	void *p = xaligned_alloc(XBIG_PAGE, whole);
+#ifdef MADV_HUGEPAGE
+	madvise(p, whole, MADV_HUGEPAGE); /* advice: no harm done if the kernel declines it */
+#endif
 	return p;
 }
 

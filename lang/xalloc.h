@@ -9,6 +9,13 @@ void *xcalloc(size_t count, size_t size);
 void *xrealloc(void *ptr, size_t size);
 /* size bytes at a multiple of align (a power of two that divides size); free() frees it. */
 void *xaligned_alloc(size_t align, size_t size);
+/* size bytes for a big array read at random, cache-line aligned; from XBIG_PAGE bytes on,
+ * in whole pages of XBIG_PAGE (so up to XBIG_PAGE - 1 more) that the kernel is asked to
+ * back with transparent huge pages where it offers them (Linux: THP on madvise or always),
+ * so that a read at random does not also miss the TLB, whose 4 KiB pages reach a few
+ * megabytes. free() frees it. */
+enum { XBIG_PAGE = 2 << 20 };
+void *xbig_alloc(size_t size);
 /* Grows *ptr (an array of *cap elements of elem bytes) to hold at least need elements. */
 void xgrow(void **ptr, size_t *cap, size_t need, size_t elem);
 char *xstrdup(const char *s);
