@@ -954,7 +954,8 @@ uint64_t bvh_bytes(uint64_t n, uint64_t ntriangles)
 	uint64_t wide = n * sizeof(struct bin_node) + wide_nodes * sizeof(struct bvh_node);
 	/* then the nodes and the packets, at most one for two triangles (MIN_PACKED), in
 	 * whole huge pages (xbig_alloc) */
-	uint64_t packets = ntriangles / 2 * sizeof(struct tri_packet) + XBIG_PAGE;
+	uint64_t packets = ntriangles / 2 * sizeof(struct tri_packet);
+	packets += packets ? XBIG_PAGE : 0;
 	uint64_t packed = wide_nodes * sizeof(struct bvh_node) + packets;
 	uint64_t most = build > wide ? build : wide;
 	return n * sizeof(uint32_t) + (most > packed ? most : packed);
