@@ -872,10 +872,11 @@ static void finalize_leaves(struct bvh *b, const struct scene *sc)
 		return;
 	/* in huge pages: a random ray reads one packet or two in a big mesh, each a TLB miss
 	 * of its own in 4 KiB pages (the 1M-triangle bunny's packets take 78 MB); its random
-	 * rays were 14% faster (median of 16 alternating pairs), and the build no slower
-	 * than within noise. The nodes gained nothing so (12 MB there, within the TLB's
-	 * reach); 10^6 spheres' nodes (76 MB) neither, and this machine's kernel zeroes a
-	 * fresh huge page slowly enough to slow their build by a fifth (622f9bd). */
+	 * rays were 7% and 14% faster (medians of two sets of 16 alternating pairs). This
+	 * VM zeroes a fresh huge page slowly, which made that build 0.319 -> 0.345 s (medians
+	 * of 10 runs). The nodes gained nothing so (12 MB there, within the TLB's reach);
+	 * 10^6 spheres' nodes (76 MB) 2% on camera rays, against a build a fifth slower
+	 * (622f9bd). */
 	b->packets = xbig_alloc(n * sizeof *b->packets);
 	b->npackets = n;
 	parallel_for(pk.nchunks, fill_packets, &pk);
