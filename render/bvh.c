@@ -206,10 +206,10 @@ struct task {
  * of BVH_BIG_TREE primitives or more, whose lower nodes no longer stay in cache, a node
  * visit costs a packet test, a cache miss each: there the leaves grow and the node array
  * shrinks (1M-triangle bunny: 3.8 triangles a packet, 12 MB of nodes; 54 MB at a node
- * price of 1 and one triangle a unit). The
- * spheres keep the node's price: at three times it, 10^6 spheres' leaves held 3.3
- * spheres and their camera rays tested 11.8 spheres each instead of 1.5 (a leaf's box
- * around small spheres far apart is mostly empty), with no faster a render. */
+ * price of 1 and one triangle a unit). The spheres keep the node's price: at three times
+ * it, 10^6 spheres' leaves held 3.3 spheres and their camera rays tested 11.8 spheres
+ * each instead of 1.5 (a leaf's box around small spheres far apart is mostly empty), with
+ * no faster a render. */
 struct sah {
 	unsigned node, sphere, packet;
 };

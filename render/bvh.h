@@ -22,8 +22,10 @@ void bvh_free(struct bvh *b);
 /* Puts sc's spheres and triangles in the order b's leaves list them (b built on sc) and
  * renumbers the leaves to match: the primitives a ray tests one after another then share
  * cache lines, where a scene in random order costs a cache miss per primitive tested.
- * The image stays the same: the same primitives are tested in the same order. Any other
- * accelerator built on sc is left pointing at the old numbers. */
+ * Then copies each leaf of two triangles or more into packets of four (tri_packet.h),
+ * which the traversal tests four at once. The image stays the same: the same primitives
+ * are tested in the same order, with the same arithmetic. Any other accelerator built on
+ * sc is left pointing at the old numbers. */
 void bvh_reorder(struct bvh *b, struct scene *sc);
 /* The most bytes bvh_build and bvh_reorder hold at once for n primitives of which
  * ntriangles are triangles (the build records, the nodes of a tree with one primitive a
