@@ -185,7 +185,16 @@ ACCELS = [("bvh", "#1f77b4", "solid"), ("grid", "#2ca02c", "solid"), ("none", "#
 ACCEL_NAMES = {"bvh": "--accel bvh", "grid": "--accel grid", "none": "--accel none"}
 
 
+# The scaling study's render phases at small N last 20-50 ms, which one of this machine's
+# slow spells moved by half in a median of three (10^3 spheres: 0.035 s in one full run,
+# 0.051 s in the next): such configurations run until they have taken SCALING_WALL seconds
+# in all, up to SCALING_MAX_RUNS runs.
+SCALING_WALL = 2.0
+SCALING_MAX_RUNS = 15
+
+
 def scaling(work, runs):
+    """{(n, accel): the median of each phase over the runs, and the runs' count}"""
     table = {}
     none_last = None  # (n, render seconds) of the last none run
     for n in SCALING_N:
@@ -195,10 +204,11 @@ def scaling(work, runs):
             if accel == "none" and none_last and none_last[1] * n / none_last[0] > NONE_LIMIT:
                 continue  # brute force grows as n: this one would pass the limit
             ms = []
-            for i in range(runs):
-                log("bench: scaling: %d spheres, --accel %s, run %d of %d" % (n, accel, i + 1, runs))
+            while len(ms) < runs or (sum(m["wall"] for m in ms) < SCALING_WALL and len(ms) < SCALING_MAX_RUNS):
+                log("bench: scaling: %d spheres, --accel %s, run %d" % (n, accel, len(ms) + 1))
                 ms.append(scn_render(scene, os.path.join(work, "field.png"), accel))
-            table[(n, accel)] = median_run(ms)
+            table[(n, accel)] = {k: statistics.median(m[k] for m in ms) for k in ("render", "load", "build")}
+            table[(n, accel)]["runs"] = len(ms)
             if accel == "none":
                 none_last = (n, table[(n, accel)]["render"])
     return table
@@ -206,7 +216,10 @@ def scaling(work, runs):
 
 def print_scaling(table, runs):
     print("render time against the number of spheres: 640x480, 1 spp, 1 light, spheres at random in a box "
-          "filling 3%% of it; -j %d, median of %d" % (THREADS, runs))
+          "filling 3%% of it; -j %d; each phase's median over %d runs or more (a configuration runs until "
+          "it has taken %.0f s, up to %d runs: %s)" % (THREADS, runs, SCALING_WALL, SCALING_MAX_RUNS,
+                                                  ", ".join("%d" % table[(n, "bvh")]["runs"] for n in SCALING_N)
+                                                  + " for the bvh's"))
     print("(render: the render phase of --stats; setup: parse, evaluate and build the accelerator; "
           "none is left out where it would pass %.0f s)" % NONE_LIMIT)
     print("%9s | %s" % ("", " | ".join("%-16s" % ("--accel " + a) for a, _, _ in ACCELS)))
