@@ -10,8 +10,8 @@
 enum accel { ACCEL_BVH, ACCEL_GRID, ACCEL_NONE }; /* ACCEL_GRID: see accel.h and grid.h */
 
 /* Children per node of the traversal's tree; and the primitives from which a tree is
- * taken to be too big for the caches, which changes how it is built and walked (bvh.c:
- * struct sah, prefetch_nodes()). */
+ * taken to be too big for the caches, which changes how it is built and walked
+ * (bvh_build.c's struct sah, bvh_traverse.c's prefetch_nodes()). */
 enum { BVH_WIDTH = 8, BVH_BIG_TREE = 1 << 18 };
 
 /* Builds over sc's spheres and triangles, on every core; the tree is the same whatever

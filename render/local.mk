@@ -3,7 +3,8 @@ noinst_LIBRARIES += render/libscnrender.a
 render_libscnrender_a_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS) $(EXR_CFLAGS) $(ASSIMP_CFLAGS)
 render_libscnrender_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
 render_libscnrender_a_SOURCES = \
-	%D%/accel.h %D%/bvh.c %D%/bvh.h %D%/grid.c %D%/grid.h \
+	%D%/accel.h %D%/bvh.h %D%/bvh_impl.h %D%/bvh_build.c %D%/bvh_collapse.c %D%/bvh_reorder.c \
+	%D%/bvh_traverse.c %D%/grid.c %D%/grid.h %D%/parallel.c %D%/parallel.h %D%/v4f.h \
 	%D%/camera.c %D%/camera.h \
 	%D%/render.c %D%/render.h \
 	%D%/scene.c %D%/scene.h \

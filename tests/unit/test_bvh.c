@@ -1,4 +1,4 @@
-/* test_bvh.c: the BVH (render/bvh.c) against brute force. Random scenes are built
+/* test_bvh.c: the BVH (render/bvh_*.c) against brute force. Random scenes are built
  * directly as struct scene: spheres of random radii down to 1e-6, random triangles
  * including long thin ones, fans and grids that share edges and vertices, and planes.
  * For many rays (origins inside and outside the scene, on box faces and on vertices;
