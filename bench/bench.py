@@ -215,11 +215,11 @@ def scaling(work, runs):
 
 
 def print_scaling(table, runs):
+    counts = ", ".join("%d" % table[(n, "bvh")]["runs"] for n in SCALING_N)
     print("render time against the number of spheres: 640x480, 1 spp, 1 light, spheres at random in a box "
           "filling 3%% of it; -j %d; each phase's median over %d runs or more (a configuration runs until "
-          "it has taken %.0f s, up to %d runs: %s)" % (THREADS, runs, SCALING_WALL, SCALING_MAX_RUNS,
-                                                  ", ".join("%d" % table[(n, "bvh")]["runs"] for n in SCALING_N)
-                                                  + " for the bvh's"))
+          "it has taken %.0f s, up to %d runs; the bvh's: %s)" % (THREADS, runs, SCALING_WALL, SCALING_MAX_RUNS,
+                                                                 counts))
     print("(render: the render phase of --stats; setup: parse, evaluate and build the accelerator; "
           "none is left out where it would pass %.0f s)" % NONE_LIMIT)
     print("%9s | %s" % ("", " | ".join("%-16s" % ("--accel " + a) for a, _, _ in ACCELS)))
