@@ -20,13 +20,5 @@ lang_libscnlang_a_SOURCES += \
 	%D%/check.c %D%/check.h %D%/check_internal.h %D%/check_names.c %D%/check_block.c \
 	%D%/eval.c %D%/eval.h \
 	%D%/scene_desc.c %D%/scene_desc.h
-lang_libscnlang_a_SOURCES += %D%/load.c %D%/load.h %D%/lower.c %D%/lower.h
-# lower.c is the bridge to the renderer: the one part of lang/ that sees render/
-lang_libscnlang_a_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-
-# Allocation that never fails silently, the clock and the memory limits, shared by lang/
-# and render/.
-noinst_LIBRARIES += lang/libscnutil.a
-lang_libscnutil_a_SOURCES = %D%/xalloc.c %D%/xalloc.h %D%/cleanup.c %D%/cleanup.h %D%/clock.c %D%/clock.h \
-	%D%/memory.c %D%/memory.h
+lang_libscnlang_a_SOURCES += %D%/load.c %D%/load.h
 lang_libscnlang_a_SOURCES += %D%/suggest.c %D%/suggest.h

@@ -1,8 +1,7 @@
 # src/local.mk: the scn command.
 bin_PROGRAMS += scn
 scn_SOURCES = %D%/main.c %D%/cli.c %D%/cli.h %D%/cmd_check.c %D%/cmd_render.c
-scn_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-scn_LDADD = lang/libscnlang.a $(RENDER_LIBS)
+scn_LDADD = $(SCN_LIBS)
 scn_SOURCES += src/cmd_diff.c
 scn_SOURCES += %D%/cmd_pov.c
 scn_SOURCES += %D%/cmd_converge.c %D%/plot.c %D%/plot.h %D%/povray.c %D%/povray.h

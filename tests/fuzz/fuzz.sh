@@ -28,8 +28,7 @@ obj=$out/obj
 mkdir -p "$obj"
 flags="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all \
 -std=c11 -Wall -Wextra -ffp-contract=off -pthread -D_XOPEN_SOURCE=700 \
--I$top_builddir -I$top_builddir/lang -I$top_srcdir -I$top_srcdir/lang -I$top_srcdir/render \
--I$top_srcdir/tests/fuzz $FUZZ_LIB_CFLAGS"
+-I$top_builddir -I$top_srcdir/tests/fuzz $FUZZ_LIB_CFLAGS"
 
 # The libraries, compiled again with the sanitizers and coverage (only what changed).
 objs=

@@ -10,8 +10,8 @@ FUZZ_SECONDS = 60
 FUZZ_TARGETS = scene mesh png exr
 FUZZ_OPTIONS =
 fuzz: all
-	@FUZZ_SOURCES='$(lang_libscnlang_a_SOURCES) $(lang_libscnutil_a_SOURCES) $(render_libscnrender_a_SOURCES)' \
-	FUZZ_LIB_CFLAGS='$(PNG_CFLAGS) $(EXR_CFLAGS) $(ASSIMP_CFLAGS)' \
+	@FUZZ_SOURCES='$(SCN_LIB_FILES)' \
+	FUZZ_LIB_CFLAGS='$(ALL_INCLUDES) $(PNG_CFLAGS) $(EXR_CFLAGS) $(ASSIMP_CFLAGS)' \
 	FUZZ_LIBS='$(PNG_LIBS) $(EXR_LIBS) $(ASSIMP_LIBS)' \
 	FUZZ_CC='$(FUZZ_CC)' FUZZ_SECONDS='$(FUZZ_SECONDS)' FUZZ_TARGETS='$(FUZZ_TARGETS)' \
 	FUZZ_OPTIONS='$(FUZZ_OPTIONS)' top_srcdir='$(abs_top_srcdir)' top_builddir='$(abs_top_builddir)' \
@@ -24,22 +24,22 @@ clean-fuzz:
 .PHONY: clean-fuzz
 
 # the harnesses with replay.c's main(), for replay.sh
-FUZZ_REPLAY_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render -I$(srcdir)/tests/fuzz
+FUZZ_REPLAY_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/tests/fuzz
 FUZZ_REPLAY_SOURCES = tests/fuzz/replay.c tests/fuzz/fuzz_file.c tests/fuzz/fuzz.h
 check_PROGRAMS += tests/fuzz/replay_scene tests/fuzz/replay_mesh tests/fuzz/replay_png \
 	tests/fuzz/replay_exr
 tests_fuzz_replay_scene_SOURCES = tests/fuzz/fuzz_scene.c $(FUZZ_REPLAY_SOURCES)
 tests_fuzz_replay_scene_CPPFLAGS = $(FUZZ_REPLAY_CPPFLAGS)
-tests_fuzz_replay_scene_LDADD = lang/libscnlang.a $(RENDER_LIBS)
+tests_fuzz_replay_scene_LDADD = $(SCN_LIBS)
 tests_fuzz_replay_mesh_SOURCES = tests/fuzz/fuzz_mesh.c $(FUZZ_REPLAY_SOURCES)
 tests_fuzz_replay_mesh_CPPFLAGS = $(FUZZ_REPLAY_CPPFLAGS)
-tests_fuzz_replay_mesh_LDADD = $(RENDER_LIBS)
+tests_fuzz_replay_mesh_LDADD = $(SCN_LIBS)
 tests_fuzz_replay_png_SOURCES = tests/fuzz/fuzz_png.c tests/fuzz/fuzz_image.h $(FUZZ_REPLAY_SOURCES)
 tests_fuzz_replay_png_CPPFLAGS = $(FUZZ_REPLAY_CPPFLAGS)
-tests_fuzz_replay_png_LDADD = $(RENDER_LIBS)
+tests_fuzz_replay_png_LDADD = $(SCN_LIBS)
 tests_fuzz_replay_exr_SOURCES = tests/fuzz/fuzz_exr.c tests/fuzz/fuzz_image.h $(FUZZ_REPLAY_SOURCES)
 tests_fuzz_replay_exr_CPPFLAGS = $(FUZZ_REPLAY_CPPFLAGS)
-tests_fuzz_replay_exr_LDADD = $(RENDER_LIBS)
+tests_fuzz_replay_exr_LDADD = $(SCN_LIBS)
 TESTS += tests/fuzz/replay.sh
 EXTRA_DIST += tests/fuzz/replay.sh tests/fuzz/fuzz.sh tests/fuzz/lsan.supp tests/fuzz/corpus \
 	tests/fuzz/regress

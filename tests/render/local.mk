@@ -3,8 +3,7 @@
 # .expect says how), checked by probe.
 check_PROGRAMS += tests/render/probe
 tests_render_probe_SOURCES = tests/render/probe.c
-tests_render_probe_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-tests_render_probe_LDADD = $(RENDER_LIBS)
+tests_render_probe_LDADD = $(SCN_LIBS)
 RENDER_TESTS = tests/render/emit.scn tests/render/blinn_phong.scn
 RENDER_TESTS += tests/render/lambert_60.scn tests/render/point_light.scn tests/render/two_lights.scn tests/render/default_material.scn tests/render/light_behind.scn tests/render/two_sided.scn
 RENDER_TESTS += tests/render/highlight.scn tests/render/highlight_filtered.scn tests/render/shadowless.scn

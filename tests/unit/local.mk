@@ -3,12 +3,11 @@
 #   check_PROGRAMS += tests/unit/test_NAME
 #   TESTS += tests/unit/test_NAME
 #   tests_unit_test_NAME_SOURCES = tests/unit/test_NAME.c
-#   tests_unit_test_NAME_LDADD = $(RENDER_LIBS)
+#   tests_unit_test_NAME_LDADD = $(SCN_LIBS)
 check_PROGRAMS += tests/unit/test_mesh_import
 TESTS += tests/unit/test_mesh_import
 tests_unit_test_mesh_import_SOURCES = tests/unit/test_mesh_import.c
-# mesh_import allocates through lang's xalloc
-tests_unit_test_mesh_import_LDADD = $(RENDER_LIBS) lang/libscnlang.a
+tests_unit_test_mesh_import_LDADD = $(SCN_LIBS)
 EXTRA_DIST += tests/unit/meshes/ascii.ply tests/unit/meshes/bad_index.obj \
 	tests/unit/meshes/bad_number.ply tests/unit/meshes/binary.ply tests/unit/meshes/empty.obj \
 	tests/unit/meshes/garbage.bin tests/unit/meshes/lines.obj tests/unit/meshes/mixed.obj \
@@ -18,32 +17,28 @@ EXTRA_DIST += tests/unit/meshes/ascii.ply tests/unit/meshes/bad_index.obj \
 check_PROGRAMS += tests/unit/test_image
 TESTS += tests/unit/test_image
 tests_unit_test_image_SOURCES = tests/unit/test_image.c
-tests_unit_test_image_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render $(PNG_CFLAGS)
-tests_unit_test_image_LDADD = $(RENDER_LIBS) lang/libscnlang.a
+tests_unit_test_image_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS)
+tests_unit_test_image_LDADD = $(SCN_LIBS)
 tests_unit_test_image_CPPFLAGS += $(EXR_CFLAGS)
 check_PROGRAMS += tests/unit/test_sampler
 TESTS += tests/unit/test_sampler
 tests_unit_test_sampler_SOURCES = tests/unit/test_sampler.c
-tests_unit_test_sampler_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-tests_unit_test_sampler_LDADD = $(RENDER_LIBS)
+tests_unit_test_sampler_LDADD = $(SCN_LIBS)
 check_PROGRAMS += tests/unit/test_bvh
 TESTS += tests/unit/test_bvh
 tests_unit_test_bvh_SOURCES = tests/unit/test_bvh.c
-tests_unit_test_bvh_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-tests_unit_test_bvh_LDADD = $(RENDER_LIBS)
+tests_unit_test_bvh_LDADD = $(SCN_LIBS)
 check_PROGRAMS += tests/unit/test_shape
 TESTS += tests/unit/test_shape
 tests_unit_test_shape_SOURCES = tests/unit/test_shape.c
-tests_unit_test_shape_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-tests_unit_test_shape_LDADD = $(RENDER_LIBS)
+tests_unit_test_shape_LDADD = $(SCN_LIBS)
 EXTRA_DIST += tests/unit/meshes/cut_faces.ply tests/unit/meshes/no_end_header.ply \
 	tests/unit/meshes/empty_faces.ply
 check_PROGRAMS += tests/unit/test_imgdiff
 TESTS += tests/unit/test_imgdiff
 tests_unit_test_imgdiff_SOURCES = tests/unit/test_imgdiff.c
-tests_unit_test_imgdiff_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/render
-tests_unit_test_imgdiff_LDADD = $(RENDER_LIBS)
+tests_unit_test_imgdiff_LDADD = $(SCN_LIBS)
 check_PROGRAMS += tests/unit/test_crash
 TESTS += tests/unit/test_crash
 tests_unit_test_crash_SOURCES = tests/unit/test_crash.c
-tests_unit_test_crash_LDADD = lang/libscnutil.a
+tests_unit_test_crash_LDADD = $(SCN_LIBS)

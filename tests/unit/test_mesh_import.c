@@ -9,8 +9,8 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-#include "render/mesh_import.h"
-#include "tests/unit/check.h"
+#include "check.h"
+#include "mesh_import.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define HAVE_LSAN 1

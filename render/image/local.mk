@@ -1,0 +1,6 @@
+# render/image/local.mk: the film, its pixel formats and files, and the image diff.
+noinst_LIBRARIES += render/image/libscnimage.a
+render_image_libscnimage_a_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS) $(EXR_CFLAGS)
+render_image_libscnimage_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
+render_image_libscnimage_a_SOURCES = %D%/image.c %D%/image.h %D%/png.c %D%/exr.c %D%/ppm.c \
+	%D%/imgdiff.c %D%/imgdiff.h

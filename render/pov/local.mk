@@ -1,0 +1,5 @@
+# render/pov/local.mk: the POV-Ray export of a lowered scene.
+noinst_LIBRARIES += render/pov/libscnpov.a
+render_pov_libscnpov_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
+render_pov_libscnpov_a_SOURCES = %D%/pov_export.c %D%/pov_export.h %D%/pov_material.c %D%/pov_material.h \
+	%D%/pov_write.c %D%/pov_write.h

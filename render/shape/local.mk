@@ -1,0 +1,4 @@
+# render/shape/local.mk: ray intersection with each kind of primitive.
+noinst_LIBRARIES += render/shape/libscnshape.a
+render_shape_libscnshape_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
+render_shape_libscnshape_a_SOURCES = %D%/shape.c %D%/shape.h
