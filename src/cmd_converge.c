@@ -14,7 +14,6 @@
 #include <strings.h>
 #include <unistd.h>
 
-#include "atomic.h"
 #include "accel.h"
 #include "cli.h"
 #include "clock.h"
@@ -23,6 +22,7 @@
 #include "imgdiff.h"
 #include "load.h"
 #include "lower.h"
+#include "outfile.h"
 #include "plot.h"
 #include "pov_export.h"
 #include "povray.h"
@@ -550,8 +550,8 @@ static void print_table(const struct run *r)
 static bool write_file(const char *path, const char *text, size_t len)
 {
 	char *tmp, err[1024];
-	int fd = atomic_open(path, &tmp, err, sizeof err);
-	int rc = fd < 0 ? -fd : atomic_finish(fd, tmp, path, image_write_all(fd, text, len), err, sizeof err);
+	int fd = outfile_open(path, &tmp, err, sizeof err);
+	int rc = fd < 0 ? -fd : outfile_finish(fd, tmp, path, outfile_write(fd, text, len), err, sizeof err);
 	if (rc != 0) {
 		fprintf(stderr, "scn: %s\n", err);
 		return false;

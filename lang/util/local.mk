@@ -1,4 +1,4 @@
 # lang/util/local.mk: what every layer uses and that uses nothing above it.
 noinst_LIBRARIES += lang/util/libscnutil.a
 lang_util_libscnutil_a_SOURCES = %D%/xalloc.c %D%/xalloc.h %D%/cleanup.c %D%/cleanup.h %D%/clock.c %D%/clock.h \
-	%D%/memory.c %D%/memory.h %D%/atomic.c %D%/atomic.h
+	%D%/memory.c %D%/memory.h %D%/outfile.c %D%/outfile.h

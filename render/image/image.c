@@ -12,8 +12,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "atomic.h"
 #include "memory.h"
+#include "outfile.h"
 #include "xalloc.h"
 
 struct image *image_new(int width, int height)
@@ -130,22 +130,6 @@ int image_alloc_for_read(int64_t width, int64_t height, int fd, double data_byte
 	return 0;
 }
 
-int image_write_all(int fd, const void *buf, size_t n)
-{
-	const char *p = buf;
-	while (n > 0) {
-		ssize_t k = write(fd, p, n);
-		if (k < 0) {
-			if (errno == EINTR)
-				continue;
-			return errno;
-		}
-		p += k;
-		n -= (size_t)k;
-	}
-	return 0;
-}
-
 int image_file_create(struct image_file *f, const char *path, const struct image_write_options *opt,
                       char *err, size_t errlen)
 {
@@ -159,7 +143,7 @@ int image_file_create(struct image_file *f, const char *path, const struct image
 		snprintf(err, errlen, "cannot write '%s': bit depth %d (must be 8 or 16)", path, f->opt.bit_depth);
 		return EINVAL;
 	}
-	f->fd = atomic_open(path, &f->tmp, err, errlen);
+	f->fd = outfile_open(path, &f->tmp, err, errlen);
 	return f->fd < 0 ? -f->fd : 0;
 }
 
@@ -176,7 +160,7 @@ int image_file_commit(struct image_file *f, const struct image *img, char *err, 
 		rc = image_exr_write(img, f->fd, f->path, f->opt.float32, err, errlen);
 	else
 		rc = image_ppm_write(img, f->fd, f->path, f->opt.bit_depth, err, errlen);
-	rc = atomic_finish(f->fd, f->tmp, f->path, rc, err, errlen);
+	rc = outfile_finish(f->fd, f->tmp, f->path, rc, err, errlen);
 	f->fd = -1;
 	f->tmp = NULL;
 	return rc;

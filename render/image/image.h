@@ -117,8 +117,6 @@ int image_ppm_read(int fd, const char *path, bool linear, struct image **out, ch
                    size_t errlen);
 
 /* Helpers shared by the format files. */
-/* Writes all n bytes to fd, retrying short writes; returns 0 or errno. */
-int image_write_all(int fd, const void *buf, size_t n);
 /* A table of maxval + 1 linear values, entry v = decode(v / maxval) through the sRGB
  * curve (gamma 0) or the power law x^(1/gamma) of a PNG gAMA value. Freed with free(). */
 float *image_decode_table(unsigned maxval, double gamma);

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "outfile.h"
 #include "xalloc.h"
 
 /* State shared with libpng's callbacks. It lives on the heap, not in the function
@@ -69,12 +70,12 @@ static void write_fn(png_structp png, png_bytep data, size_t n)
 {
 	struct png_io *io = png_get_io_ptr(png);
 	if (io->len + n > sizeof io->buf) {
-		if ((io->error = image_write_all(io->fd, io->buf, io->len)) != 0)
+		if ((io->error = outfile_write(io->fd, io->buf, io->len)) != 0)
 			png_error(png, "write failed");
 		io->len = 0;
 	}
 	if (n > sizeof io->buf) {
-		if ((io->error = image_write_all(io->fd, data, n)) != 0)
+		if ((io->error = outfile_write(io->fd, data, n)) != 0)
 			png_error(png, "write failed");
 		return;
 	}
@@ -85,7 +86,7 @@ static void write_fn(png_structp png, png_bytep data, size_t n)
 static void flush_fn(png_structp png)
 {
 	struct png_io *io = png_get_io_ptr(png);
-	if ((io->error = image_write_all(io->fd, io->buf, io->len)) != 0)
+	if ((io->error = outfile_write(io->fd, io->buf, io->len)) != 0)
 		png_error(png, "write failed");
 	io->len = 0;
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "outfile.h"
 #include "xalloc.h"
 
 int image_ppm_write(const struct image *img, int fd, const char *path, int bit_depth,
@@ -18,7 +19,7 @@ int image_ppm_write(const struct image *img, int fd, const char *path, int bit_d
 	/* no comment lines, unlike POV-Ray's: nothing in the file may vary between runs */
 	char header[64];
 	int hlen = snprintf(header, sizeof header, "P6\n%d %d\n%u\n", img->width, img->height, maxval);
-	int rc = image_write_all(fd, header, (size_t)hlen);
+	int rc = outfile_write(fd, header, (size_t)hlen);
 	size_t rowlen = (size_t)img->width * 3 * bps;
 	unsigned char *row = xmalloc(rowlen);
 	for (int y = 0; y < img->height && rc == 0; y++) {
@@ -30,7 +31,7 @@ int image_ppm_write(const struct image *img, int fd, const char *path, int bit_d
 				*p++ = (unsigned char)(v >> 8);
 			*p++ = (unsigned char)v;
 		}
-		rc = image_write_all(fd, row, rowlen);
+		rc = outfile_write(fd, row, rowlen);
 	}
 	free(row);
 	if (rc != 0)

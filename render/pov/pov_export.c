@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "atomic.h"
+#include "outfile.h"
 #include "pov_material.h"
 #include "pov_write.h"
 #include "xalloc.h"
@@ -717,10 +717,10 @@ int pov_export_file(const struct scene *sc, const struct pov_export_options *opt
                     size_t errlen)
 {
 	char *tmp;
-	int fd = atomic_open(path, &tmp, err, errlen);
+	int fd = outfile_open(path, &tmp, err, errlen);
 	if (fd < 0)
 		return -fd;
-	/* a stream on a second descriptor: fclose flushes and closes it, and atomic_finish
+	/* a stream on a second descriptor: fclose flushes and closes it, and outfile_finish
 	 * syncs and closes the first */
 	int dup_fd = dup(fd);
 	FILE *f = dup_fd >= 0 ? fdopen(dup_fd, "w") : NULL;
@@ -728,7 +728,7 @@ int pov_export_file(const struct scene *sc, const struct pov_export_options *opt
 		int e = errno;
 		if (dup_fd >= 0)
 			close(dup_fd);
-		return atomic_finish(fd, tmp, path, e, err, errlen);
+		return outfile_finish(fd, tmp, path, e, err, errlen);
 	}
 	char *what = xmalloc(strlen(path) + 3);
 	sprintf(what, "'%s'", path);
@@ -736,5 +736,5 @@ int pov_export_file(const struct scene *sc, const struct pov_export_options *opt
 	free(what);
 	if (fclose(f) != 0 && rc == 0)
 		rc = errno ? errno : EIO;
-	return atomic_finish(fd, tmp, path, rc, err, errlen);
+	return outfile_finish(fd, tmp, path, rc, err, errlen);
 }

@@ -1,8 +1,8 @@
-/* atomic.c: the temporary-file-and-rename protocol shared by the image and POV-Ray
+/* outfile.c: the temporary-file-and-rename protocol shared by the image and POV-Ray
  * writers: an interrupted or failed write never leaves a truncated file or destroys the
  * one that was there. A signal or running out of memory meanwhile removes the temporary
  * file too (cleanup.h). */
-#include "atomic.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -18,7 +18,7 @@
 /* The name is short and fixed apart from the counter, so that a long final name cannot
  * make it too long, and O_EXCL keeps two writers (or a stale file) apart. The mode 0666
  * lets the umask decide the permissions, as for any file the user creates. */
-int atomic_open(const char *path, char **tmp, char *err, size_t errlen)
+int outfile_open(const char *path, char **tmp, char *err, size_t errlen)
 {
 	if (errlen)
 		err[0] = '\0';
@@ -52,7 +52,7 @@ int atomic_open(const char *path, char **tmp, char *err, size_t errlen)
 	return -e;
 }
 
-int atomic_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t errlen)
+int outfile_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t errlen)
 {
 	/* fsync before rename: otherwise a crash soon after could leave the new name
 	 * pointing at an empty file, the very thing the rename is there to prevent. close
@@ -71,4 +71,20 @@ int atomic_finish(int fd, char *tmp, const char *path, int rc, char *err, size_t
 	cleanup_unregister(tmp);
 	free(tmp);
 	return rc;
+}
+
+int outfile_write(int fd, const void *buf, size_t n)
+{
+	const char *p = buf;
+	while (n > 0) {
+		ssize_t k = write(fd, p, n);
+		if (k < 0) {
+			if (errno == EINTR)
+				continue;
+			return errno;
+		}
+		p += k;
+		n -= (size_t)k;
+	}
+	return 0;
 }
