@@ -10,10 +10,10 @@
 
 #include "camera.h"
 #include "clock.h"
-#include "shape.h"
-#include "image.h"
+#include "image_file.h"
 #include "memory.h"
 #include "mesh_import.h"
+#include "shape.h"
 #include "xalloc.h"
 
 struct mesh_cache_entry {

@@ -18,7 +18,7 @@
 #include "cli.h"
 #include "clock.h"
 #include "diag.h"
-#include "image.h"
+#include "image_file.h"
 #include "imgdiff.h"
 #include "load.h"
 #include "lower.h"

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "image.h"
+#include "image_file.h"
 #include "imgdiff.h"
 
 /* The comparison failed: a limit is exceeded or the sizes differ (as `cmp` and `diff`

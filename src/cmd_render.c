@@ -13,7 +13,7 @@
 #include "cli.h"
 #include "clock.h"
 #include "diag.h"
-#include "image.h"
+#include "image_file.h"
 #include "load.h"
 #include "lower.h"
 #include "render.h"

@@ -15,6 +15,7 @@
 
 #include "cleanup.h"
 #include "clock.h"
+#include "image_file.h"
 #include "xalloc.h"
 
 /* The path of an executable named name on PATH, or NULL; malloc'd. */

@@ -1,6 +1,6 @@
 /* exr.c: OpenEXR through its C API (OpenEXRCore): linear half or float RGB out; R, G,
  * B (or Y) channels of any pixel type, scanline or tiled, in. */
-#include "image.h"
+#include "codec.h"
 
 #include <errno.h>
 #include <math.h>
@@ -15,7 +15,7 @@
 
 /* What the library's callbacks share with us (the context's user data). The library
  * reads and writes through our descriptor, so that an OS error keeps its errno and
- * image.c keeps control of the temporary file. */
+ * image_file.c keeps control of the temporary file. */
 struct exr_io {
 	int fd;
 	int error;                     /* errno of a failed read or write, or 0 */

@@ -2,5 +2,5 @@
 noinst_LIBRARIES += render/image/libscnimage.a
 render_image_libscnimage_a_CPPFLAGS = $(AM_CPPFLAGS) $(PNG_CFLAGS) $(EXR_CFLAGS)
 render_image_libscnimage_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
-render_image_libscnimage_a_SOURCES = %D%/image.c %D%/image.h %D%/png.c %D%/exr.c %D%/ppm.c \
+render_image_libscnimage_a_SOURCES = %D%/image.c %D%/image.h %D%/image_file.c %D%/image_file.h %D%/codec.h %D%/png.c %D%/exr.c %D%/ppm.c \
 	%D%/imgdiff.c %D%/imgdiff.h

@@ -1,6 +1,6 @@
 /* png.c: PNG through libpng: sRGB-encoded 8- or 16-bit RGB out; any PNG in, decoded
  * to linear light by its sRGB or gAMA chunk as POV-Ray does. */
-#include "image.h"
+#include "codec.h"
 
 #include <errno.h>
 #include <png.h>

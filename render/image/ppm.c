@@ -1,5 +1,5 @@
 /* ppm.c: binary PPM (P6), sRGB-encoded, 8-bit or 16-bit big-endian samples. */
-#include "image.h"
+#include "codec.h"
 
 #include <errno.h>
 #include <limits.h>

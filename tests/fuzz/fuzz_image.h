@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include "codec.h"
 #include "fuzz.h"
-#include "image.h"
 
 typedef int image_reader(int fd, const char *path, struct image **out, char *err, size_t errlen);
 

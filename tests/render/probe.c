@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
+#include "image_file.h"
 
 static int failures;
 

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "image.h"
+#include "image_file.h"
 
 static char tmpdir[PATH_MAX];
 
