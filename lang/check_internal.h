@@ -1,6 +1,7 @@
 /* check_internal.h: what the checker's files share, and nothing outside them uses:
- * the checker's state and the calls between check.c (expressions, statements, the entry
- * points), check_names.c (the symbol table) and check_block.c (the blocks' attributes). */
+ * the checker's state and the calls between check.c (statements, the entry points),
+ * check_block.c (the blocks' attributes), check_expr.c (expressions) and check_names.c
+ * (the symbol table), each of which calls only those after it. */
 #ifndef SCN_CHECK_INTERNAL_H
 #define SCN_CHECK_INTERNAL_H
 
@@ -64,7 +65,7 @@ void names_pop_scope(struct checker *c);
 struct binding *names_bind(struct checker *c, const char *name, struct span sp, enum binding_kind kind,
                            enum ast_type type);
 
-/* ---- check.c ---- */
+/* ---- check_expr.c ---- */
 
 const char *type_name(enum ast_type t);
 /* Reports an unknown name at `at`, with a suggestion or a note on a later definition. */

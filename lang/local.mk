@@ -17,7 +17,8 @@ EXTRA_DIST += %D%/parser_nolac.c
 	$(AM_V_GEN)$(YACC) -Wall -Wno-yacc -Fparse.lac=none -o $@ $(srcdir)/%D%/parser.y
 lang_libscnlang_a_SOURCES += \
 	%D%/builtins.c %D%/builtins.h \
-	%D%/check.c %D%/check.h %D%/check_internal.h %D%/check_names.c %D%/check_block.c \
+	%D%/check.c %D%/check.h %D%/check_internal.h %D%/check_block.c %D%/check_expr.c \
+	%D%/check_names.c \
 	%D%/eval.c %D%/eval.h \
 	%D%/scene_desc.c %D%/scene_desc.h
 lang_libscnlang_a_SOURCES += %D%/load.c %D%/load.h
