@@ -60,7 +60,7 @@ static void *trace_some(void *arg)
 	} else {
 		for (size_t i = j->first; i < j->first + j->count; i++) {
 			struct hit h = { .t = INFINITY };
-			hits += accel_intersect(j->sc, &j->rays[i], &h);
+			hits += accel_intersect(&j->sc->accel, &j->sc->geo, &j->rays[i], &h);
 		}
 	}
 	j->hits = hits;
@@ -127,16 +127,16 @@ static void embree_spheres(RTCDevice dev, RTCScene s, const struct scene *sc)
 {
 	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
 	float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
-	                                   sc->nspheres);
+	                                   sc->geo.nspheres);
 	if (!v) {
 		fprintf(stderr, "embree_compare: Embree could not allocate the spheres\n");
 		exit(1);
 	}
-	for (size_t i = 0; i < sc->nspheres; i++) {
-		v[4 * i] = (float)sc->spheres[i].center.x;
-		v[4 * i + 1] = (float)sc->spheres[i].center.y;
-		v[4 * i + 2] = (float)sc->spheres[i].center.z;
-		v[4 * i + 3] = (float)sc->spheres[i].radius;
+	for (size_t i = 0; i < sc->geo.nspheres; i++) {
+		v[4 * i] = (float)sc->geo.spheres[i].center.x;
+		v[4 * i + 1] = (float)sc->geo.spheres[i].center.y;
+		v[4 * i + 2] = (float)sc->geo.spheres[i].center.z;
+		v[4 * i + 3] = (float)sc->geo.spheres[i].radius;
 	}
 	attach(s, g);
 }
@@ -145,30 +145,30 @@ static void embree_triangles(RTCDevice dev, RTCScene s, const struct scene *sc)
 {
 	RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
 	float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-	                                   sc->nvertices);
+	                                   sc->geo.nvertices);
 	unsigned *ix = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-	                                       sc->ntriangles);
+	                                       sc->geo.ntriangles);
 	if (!v || !ix) {
 		fprintf(stderr, "embree_compare: Embree could not allocate the mesh\n");
 		exit(1);
 	}
-	for (size_t i = 0; i < sc->nvertices; i++) {
-		v[3 * i] = (float)sc->vertices[i].x;
-		v[3 * i + 1] = (float)sc->vertices[i].y;
-		v[3 * i + 2] = (float)sc->vertices[i].z;
+	for (size_t i = 0; i < sc->geo.nvertices; i++) {
+		v[3 * i] = (float)sc->geo.vertices[i].x;
+		v[3 * i + 1] = (float)sc->geo.vertices[i].y;
+		v[3 * i + 2] = (float)sc->geo.vertices[i].z;
 	}
-	for (size_t i = 0; i < sc->ntriangles; i++)
+	for (size_t i = 0; i < sc->geo.ntriangles; i++)
 		for (int k = 0; k < 3; k++)
-			ix[3 * i + k] = sc->triangles[i].v[k];
+			ix[3 * i + k] = sc->geo.triangles[i].v[k];
 	attach(s, g);
 }
 
 static RTCScene embree_scene(RTCDevice dev, const struct scene *sc)
 {
 	RTCScene s = rtcNewScene(dev);
-	if (sc->nspheres)
+	if (sc->geo.nspheres)
 		embree_spheres(dev, s, sc);
-	if (sc->ntriangles)
+	if (sc->geo.ntriangles)
 		embree_triangles(dev, s, sc);
 	rtcCommitScene(s);
 	return s;
@@ -184,13 +184,13 @@ static struct ray *make_rays(const struct scene *sc, size_t *n)
 		for (int x = 0; x < w; x++)
 			rays[(size_t)y * (size_t)w + (size_t)x] = camera_ray(&sc->camera, (x + 0.5) / w, (y + 0.5) / h);
 	struct vec3 lo = v3s(INFINITY), hi = v3s(-INFINITY);
-	for (size_t i = 0; i < sc->nvertices; i++) {
-		lo = vmin(lo, sc->vertices[i]);
-		hi = vmax(hi, sc->vertices[i]);
+	for (size_t i = 0; i < sc->geo.nvertices; i++) {
+		lo = vmin(lo, sc->geo.vertices[i]);
+		hi = vmax(hi, sc->geo.vertices[i]);
 	}
-	for (size_t i = 0; i < sc->nspheres; i++) {
-		lo = vmin(lo, vsub(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
-		hi = vmax(hi, vadd(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+	for (size_t i = 0; i < sc->geo.nspheres; i++) {
+		lo = vmin(lo, vsub(sc->geo.spheres[i].center, v3s(sc->geo.spheres[i].radius)));
+		hi = vmax(hi, vadd(sc->geo.spheres[i].center, v3s(sc->geo.spheres[i].radius)));
 	}
 	rng_seed(12345);
 	for (size_t i = *n; i < 2 * *n; i++) {
@@ -211,13 +211,13 @@ static int compare(RTCDevice dev, const char *path, bool scaling)
 	bool ok = lang_load_scene(&d, path, &desc, NULL) == 0 && lang_lower(&d, &desc, &sc, &lt, -1) == 0;
 	diag_flush(&d);
 	diag_fini(&d);
-	if (!ok || sc.ntriangles + sc.nspheres == 0) {
+	if (!ok || sc.geo.ntriangles + sc.geo.nspheres == 0) {
 		fprintf(stderr, "embree_compare: %s: %s\n", path, ok ? "no triangles or spheres" : "cannot load it");
 		return 1;
 	}
-	sc.nplanes = 0;
+	sc.geo.nplanes = 0;
 	double t0 = clock_now();
-	accel_build(&sc, ACCEL_BVH);
+	accel_build(&sc.accel, &sc.geo, ACCEL_BVH);
 	double scn_build = clock_now() - t0;
 	t0 = clock_now();
 	RTCScene rtc = embree_scene(dev, &sc);
@@ -231,11 +231,11 @@ static int compare(RTCDevice dev, const char *path, bool scaling)
 		size_t hits[2];
 		double rate[2];
 		measure(&sc, rtc, rays, n, 1, rate, hits);
-		printf("  %-22s %9zu %12.2f %15.2f %10.0f%%  %zu/%zu\n", base, sc.nspheres + sc.ntriangles, rate[0],
+		printf("  %-22s %9zu %12.2f %15.2f %10.0f%%  %zu/%zu\n", base, sc.geo.nspheres + sc.geo.ntriangles, rate[0],
 		       rate[1], 100 * rate[0] / rate[1], hits[0], hits[1]);
 	} else {
-		printf("%s: %zu triangles, %zu spheres; build: scn %.3f s, Embree %.3f s\n", base, sc.ntriangles,
-		       sc.nspheres, scn_build, rtc_build);
+		printf("%s: %zu triangles, %zu spheres; build: scn %.3f s, Embree %.3f s\n", base, sc.geo.ntriangles,
+		       sc.geo.nspheres, scn_build, rtc_build);
 		printf("  %-20s %7s %12s %15s %11s  %s\n", "rays", "threads", "scn Mrays/s", "Embree Mrays/s",
 		       "scn/Embree", "hits scn/Embree");
 		static const char *const kinds[2] = { "camera (coherent)", "random (incoherent)" };

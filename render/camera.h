@@ -2,8 +2,14 @@
 #ifndef SCN_CAMERA_H
 #define SCN_CAMERA_H
 
-#include "scene.h"
-#include "shape.h"
+#include "ray.h"
+
+struct camera {
+	struct vec3 eye;
+	struct vec3 dir, right, up;    /* unit D, R, U of povray-equivalence.md section 3 */
+	double tan_half;               /* tan of half the horizontal field of view */
+	int width, height;
+};
 
 /* Frames the camera: D = normalize(look_at - eye), R = normalize(up x D), U = D x R
  * (povray-equivalence.md section 3). fov is horizontal, in degrees. */

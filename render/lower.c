@@ -143,17 +143,17 @@ static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
 		sc->affines[sc->naffines] = affine_inverse(&lw->desc->xforms[o->xform]);
 		to_object = (int32_t)sc->naffines++;
 	}
-	xgrow((void **)&sc->surfaces, &lw->cap_surfaces, sc->nsurfaces + 1, sizeof *sc->surfaces);
-	sc->surfaces[sc->nsurfaces] = (struct surface){ mat, to_object };
-	return (uint32_t)sc->nsurfaces++;
+	xgrow((void **)&sc->geo.surfaces, &lw->cap_surfaces, sc->geo.nsurfaces + 1, sizeof *sc->geo.surfaces);
+	sc->geo.surfaces[sc->geo.nsurfaces] = (struct surface){ mat, to_object };
+	return (uint32_t)sc->geo.nsurfaces++;
 }
 
 static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
 {
 	struct scene *sc = lw->sc;
-	xgrow((void **)&sc->vertices, &lw->cap_vertices, sc->nvertices + 1, sizeof *sc->vertices);
-	sc->vertices[sc->nvertices] = v;
-	return (uint32_t)sc->nvertices++;
+	xgrow((void **)&sc->geo.vertices, &lw->cap_vertices, sc->geo.nvertices + 1, sizeof *sc->geo.vertices);
+	sc->geo.vertices[sc->geo.nvertices] = v;
+	return (uint32_t)sc->geo.nvertices++;
 }
 
 /* Geometry beyond this distance from the origin is refused: the intersection tests
@@ -181,12 +181,12 @@ static double extent_of(struct vec3 p)
 static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_t n[3], uint32_t surface)
 {
 	struct scene *sc = lw->sc;
-	struct vec3 a = sc->vertices[v[0]], b = sc->vertices[v[1]], c = sc->vertices[v[2]];
+	struct vec3 a = sc->geo.vertices[v[0]], b = sc->geo.vertices[v[1]], c = sc->geo.vertices[v[2]];
 	struct vec3 area = vcross(vsub(b, a), vsub(c, a));
 	if (vzero(area) || !isfinite(area.x) || !isfinite(area.y) || !isfinite(area.z))
 		return false;
-	xgrow((void **)&sc->triangles, &lw->cap_triangles, sc->ntriangles + 1, sizeof *sc->triangles);
-	struct triangle *t = &sc->triangles[sc->ntriangles++];
+	xgrow((void **)&sc->geo.triangles, &lw->cap_triangles, sc->geo.ntriangles + 1, sizeof *sc->geo.triangles);
+	struct triangle *t = &sc->geo.triangles[sc->geo.ntriangles++];
 	memcpy(t->v, v, sizeof t->v);
 	memcpy(t->n, n, sizeof t->n);
 	t->surface = surface;
@@ -280,18 +280,18 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	struct affine inv = affine_inverse(x);
 	bool mirrored = xform_mirrors(x);
 	uint32_t surface = add_surface(lw, o);
-	uint32_t base = (uint32_t)sc->nvertices;
+	uint32_t base = (uint32_t)sc->geo.nvertices;
 	double extent = 0;
 	for (size_t i = 0; i < data->nvertices; i++) {
 		uint32_t v = add_vertex(lw, xform_point(x, v3a(data->vertices[i])));
-		extent = fmax(extent, extent_of(sc->vertices[v]));
+		extent = fmax(extent, extent_of(sc->geo.vertices[v]));
 	}
 	check_extent(lw, *at, "this mesh", extent);
 
-	uint32_t nbase = (uint32_t)sc->nnormals;
+	uint32_t nbase = (uint32_t)sc->geo.nnormals;
 	if (o->smooth) {
-		xgrow((void **)&sc->normals, &lw->cap_normals, sc->nnormals + data->nvertices, sizeof *sc->normals);
-		struct vec3 *normals = &sc->normals[nbase];
+		xgrow((void **)&sc->geo.normals, &lw->cap_normals, sc->geo.nnormals + data->nvertices, sizeof *sc->geo.normals);
+		struct vec3 *normals = &sc->geo.normals[nbase];
 		if (data->nnormals == data->nvertices && data->normals) {
 			for (size_t i = 0; i < data->nvertices; i++)
 				normals[i] = xform_normal(&inv, v3a(data->normals[i]));
@@ -300,7 +300,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 			memset(normals, 0, data->nvertices * sizeof *normals);
 			for (size_t f = 0; f < data->nfaces; f++) {
 				const uint32_t *v = data->faces[f];
-				struct vec3 a = sc->vertices[base + v[0]], b = sc->vertices[base + v[1]], c = sc->vertices[base + v[2]];
+				struct vec3 a = sc->geo.vertices[base + v[0]], b = sc->geo.vertices[base + v[1]], c = sc->geo.vertices[base + v[2]];
 				struct vec3 fn = vcross(vsub(b, a), vsub(c, a));
 				if (mirrored)
 					fn = vneg(fn);
@@ -312,19 +312,19 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 			double len = vlen(normals[i]);
 			normals[i] = len > 0 && isfinite(len) ? vscale(normals[i], 1 / len) : v3s(0);
 		}
-		sc->nnormals += data->nvertices;
+		sc->geo.nnormals += data->nvertices;
 	}
 	size_t dropped = 0;
 	for (size_t f = 0; f < data->nfaces; f++) {
-		uint32_t v[3], n[3] = { NO_NORMALS, NO_NORMALS, NO_NORMALS };
+		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
 		for (int k = 0; k < 3; k++) {
 			v[k] = base + data->faces[f][k];
 			if (o->smooth)
 				n[k] = nbase + data->faces[f][k];
 		}
 		/* a vertex without a usable normal (all its faces degenerate): shade the face flat */
-		if (o->smooth && (vzero(sc->normals[n[0]]) || vzero(sc->normals[n[1]]) || vzero(sc->normals[n[2]])))
-			n[0] = n[1] = n[2] = NO_NORMALS;
+		if (o->smooth && (vzero(sc->geo.normals[n[0]]) || vzero(sc->geo.normals[n[1]]) || vzero(sc->geo.normals[n[2]])))
+			n[0] = n[1] = n[2] = TRIANGLE_FLAT;
 		if (mirrored) {
 			uint32_t t = v[1], tn = n[1];
 			v[1] = v[2], n[1] = n[2];
@@ -346,8 +346,8 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 	case OBJ_SPHERE: {
 		/* only uniform scales reach a sphere: any column's length is the scale */
 		double scale = hypot(hypot(x->m[0][0], x->m[1][0]), x->m[2][0]); /* no underflow at 1e-250 */
-		xgrow((void **)&sc->spheres, &lw->cap_spheres, sc->nspheres + 1, sizeof *sc->spheres);
-		struct sphere *s = &sc->spheres[sc->nspheres++];
+		xgrow((void **)&sc->geo.spheres, &lw->cap_spheres, sc->geo.nspheres + 1, sizeof *sc->geo.spheres);
+		struct sphere *s = &sc->geo.spheres[sc->geo.nspheres++];
 		s->center = xform_point(x, v3a(o->u.sphere.center));
 		s->radius = o->u.sphere.radius * scale;
 		s->surface = add_surface(lw, o);
@@ -363,8 +363,8 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 		struct vec3 on = xform_point(x, vscale(n, o->u.plane.offset)); /* a point of the plane */
 		struct affine inv = affine_inverse(x);
 		struct vec3 wn = vunit(xform_normal(&inv, n));
-		xgrow((void **)&sc->planes, &lw->cap_planes, sc->nplanes + 1, sizeof *sc->planes);
-		struct plane *p = &sc->planes[sc->nplanes++];
+		xgrow((void **)&sc->geo.planes, &lw->cap_planes, sc->geo.nplanes + 1, sizeof *sc->geo.planes);
+		struct plane *p = &sc->geo.planes[sc->geo.nplanes++];
 		p->normal = wn;
 		p->offset = vdot(wn, on);
 		p->surface = add_surface(lw, o);
@@ -372,11 +372,11 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 		break;
 	}
 	case OBJ_TRIANGLE: {
-		uint32_t v[3], n[3] = { NO_NORMALS, NO_NORMALS, NO_NORMALS };
+		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
 		double extent = 0;
 		for (int k = 0; k < 3; k++) {
 			v[k] = add_vertex(lw, xform_point(x, v3a(o->u.triangle.v[k])));
-			extent = fmax(extent, extent_of(sc->vertices[v[k]]));
+			extent = fmax(extent, extent_of(sc->geo.vertices[v[k]]));
 		}
 		check_extent(lw, o->span, "this triangle", extent);
 		if (xform_mirrors(x)) {
@@ -386,7 +386,7 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 		}
 		uint32_t surface = add_surface(lw, o);
 		if (!add_triangle(lw, v, n, surface))
-			sc->nvertices -= 3; /* eval.c warned already */
+			sc->geo.nvertices -= 3; /* eval.c warned already */
 		break;
 	}
 	case OBJ_MESH:
@@ -447,8 +447,8 @@ static void warn_enclosed_lights(struct lowering *lw)
 		if (d->lights[i].directional)
 			continue;
 		struct vec3 p = v3a(d->lights[i].vec);
-		for (size_t s = 0; s < sc->nspheres; s++)
-			if (vlen(vsub(p, sc->spheres[s].center)) < sc->spheres[s].radius) {
+		for (size_t s = 0; s < sc->geo.nspheres; s++)
+			if (vlen(vsub(p, sc->geo.spheres[s].center)) < sc->geo.spheres[s].radius) {
 				diag_warning(lw->diag, d->lights[i].span, "this light is inside a sphere");
 				break;
 			}
@@ -485,6 +485,10 @@ enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struc
 		lw.material_map[i] = -1;
 	for (size_t i = 0; i < desc->nobjects && !too_big; i++)
 		lower_object(&lw, &desc->objects[i]);
+	out->geo.transmit = xcalloc(out->nmaterials, sizeof *out->geo.transmit);
+	for (size_t m = 0; m < out->nmaterials; m++)
+		out->geo.transmit[m] = out->materials[m].transmit;
+	out->geo.ntransmit = out->nmaterials;
 	times->load_meshes = lw.mesh_seconds;
 	double t0 = clock_now();
 	lower_sky(&lw);
@@ -503,7 +507,7 @@ enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struc
 		mesh_data_free(&lw.mesh_cache[i].data);
 	free(lw.mesh_cache);
 	free(lw.material_map);
-	if (out->nspheres + out->ntriangles + out->nplanes >= (1u << PRIM_KIND_SHIFT)) {
+	if (out->geo.nspheres + out->geo.ntriangles + out->geo.nplanes >= (1u << SHAPE_KIND_SHIFT)) {
 		diag_plain(d, DIAG_ERROR, "the scene has more than 2^30 primitives");
 		return LOAD_SCENE_ERROR;
 	}

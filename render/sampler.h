@@ -6,7 +6,15 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "scene.h"
+enum sample_kind { SAMPLE_CENTER, SAMPLE_GRID, SAMPLE_RANDOM, SAMPLE_JITTERED, SAMPLE_POISSON };
+
+/* A scene's anti-aliasing: LANGUAGE.md's samples statement. */
+struct sampling {
+	int count;
+	enum sample_kind kind;
+	uint64_t seed;
+	double target_error;           /* 0: a fixed count */
+};
 
 /* The pattern's read-only tables plus per-thread scratch; no allocation per pixel.
  *   center    (0.5, 0.5), for count 1 (every sample there for a larger count)

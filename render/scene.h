@@ -1,6 +1,6 @@
-/* scene.h: the renderer's scene: flat arrays of world-space primitives, materials,
- * lights, camera and sky. lower.c fills it from the front end's description, with only
- * the materials objects use; scene_free releases it. The tracer spawns a ray only for a
+/* scene.h: the renderer's scene: its geometry (geometry.h), materials, lights, camera
+ * and sky, and the accelerator built over the geometry. lower.c fills it from the front
+ * end's description, with only the materials objects use; scene_free releases it. The tracer spawns a ray only for a
  * term that is not zero, so a scene without a feature costs nothing for it (LANGUAGE.md
  * section 7), which --stats shows in its ray counts. */
 #ifndef SCN_SCENE_H
@@ -10,15 +10,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "accel.h"
+#include "camera.h"
+#include "geometry.h"
 #include "image.h"
-#include "vec.h"
-
-struct camera {
-	struct vec3 eye;
-	struct vec3 dir, right, up;    /* unit D, R, U of povray-equivalence.md section 3 */
-	double tan_half;               /* tan of half the horizontal field of view */
-	int width, height;
-};
+#include "sampler.h"
 
 enum light_kind { LIGHT_POINT, LIGHT_DIRECTIONAL };
 
@@ -43,36 +39,6 @@ struct affine {
 	double m[3][4];
 };
 
-/* What a primitive is made of: a material, and for a checker the map from world space
- * back to the object's own space, where the checker is defined. */
-struct surface {
-	uint32_t material;
-	int32_t to_object;             /* index into scene.affines; -1: the identity */
-};
-
-struct sphere {
-	struct vec3 center;
-	double radius;
-	uint32_t surface;
-};
-
-struct plane {
-	struct vec3 normal;            /* unit */
-	double offset;                 /* the plane is p . normal = offset */
-	uint32_t surface;
-};
-
-#define NO_NORMALS UINT32_MAX
-
-/* A triangle by the indices of its vertices. The BVH's traversal reads their positions
- * from its packets (render/tri_packet.h), four triangles' in one run of memory, which
- * copy them; everything else (hit points, bounds, the grid) goes through v[]. */
-struct triangle {
-	uint32_t v[3];                 /* into scene.vertices */
-	uint32_t n[3];                 /* into scene.normals, or NO_NORMALS (flat) */
-	uint32_t surface;
-};
-
 enum sky_kind { SKY_BLACK, SKY_CONSTANT, SKY_ZENITH_HORIZON, SKY_LATLONG };
 
 struct sky {
@@ -86,43 +52,19 @@ struct sky {
 	double intensity;
 };
 
-enum sample_kind { SAMPLE_CENTER, SAMPLE_GRID, SAMPLE_RANDOM, SAMPLE_JITTERED, SAMPLE_POISSON };
-
-struct sampling {
-	int count;
-	enum sample_kind kind;
-	uint64_t seed;
-	double target_error;           /* 0: a fixed count */
-};
-
-struct bvh;
-struct grid;
-
 struct scene {
 	struct camera camera;
 	struct light *lights;
 	size_t nlights;
 	struct material *materials;
 	size_t nmaterials;
-	struct surface *surfaces;
-	size_t nsurfaces;
 	struct affine *affines;
 	size_t naffines;
-	struct sphere *spheres;
-	size_t nspheres;
-	struct plane *planes;
-	size_t nplanes;
-	struct vec3 *vertices;
-	size_t nvertices;
-	struct vec3 *normals;
-	size_t nnormals;
-	struct triangle *triangles;
-	size_t ntriangles;
+	struct geometry geo;           /* the primitives, and what each is made of */
 	struct sky sky;
 	struct sampling sampling;
 	int max_depth;
-	struct bvh *bvh;               /* built by accel_build after lowering: one of these two */
-	struct grid *grid;
+	struct accel accel;            /* built by accel_build after lowering */
 };
 
 void scene_free(struct scene *s);

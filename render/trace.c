@@ -49,16 +49,6 @@ struct vec3 sky_radiance(const struct sky *sky, struct vec3 d)
 	return v3s(0);
 }
 
-static uint32_t surface_of(const struct scene *sc, uint32_t prim)
-{
-	uint32_t i = prim_index(prim);
-	switch (prim_kind(prim)) {
-	case PRIM_SPHERE: return sc->spheres[i].surface;
-	case PRIM_TRIANGLE: return sc->triangles[i].surface;
-	default: return sc->planes[i].surface;
-	}
-}
-
 static struct vec3 apply_affine(const struct affine *a, struct vec3 p)
 {
 	return v3(a->m[0][0] * p.x + a->m[0][1] * p.y + a->m[0][2] * p.z + a->m[0][3],
@@ -123,7 +113,7 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 		if (!li->shadowless) {
 			/* a segment from just off the surface to the light: relative end, so the
 			 * light itself needs no tolerance (NUMERICS.md section 3) */
-			struct ray shadow = { offset_origin(sp, l), l };
+			struct ray shadow = { ray_offset_origin(sp, l), l };
 			double tmax = INFINITY;
 			if (li->kind == LIGHT_POINT) {
 				struct vec3 to = vsub(li->pos, shadow.o);
@@ -134,7 +124,7 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 				shadow.d = vscale(to, 1 / len);
 			}
 			st->shadow++;
-			color = vmul(color, accel_transmittance(sc, &shadow, tmax));
+			color = vmul(color, accel_transmittance(&sc->accel, &sc->geo, &shadow, tmax));
 			if (vzero(color))
 				continue;
 		}
@@ -152,11 +142,11 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
 {
 	struct hit h = { .t = INFINITY };
-	if (!accel_intersect(sc, r, &h))
+	if (!accel_intersect(&sc->accel, &sc->geo, r, &h))
 		return sky_radiance(&sc->sky, r->d);
 	struct surface_point sp;
-	surface_at(sc, r, &h, &sp);
-	const struct surface *srf = &sc->surfaces[surface_of(sc, h.prim)];
+	shape_surface_at(&sc->geo, r, &h, &sp);
+	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, h.prim)];
 	const struct material *m = &sc->materials[srf->material];
 
 	/* the shading normal turned towards the viewer; inside or outside from the
@@ -181,7 +171,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 		if (k < 0 && any_positive(kt)) {
 			/* total internal reflection: POV-Ray traces the mirror ray with weight 1
 			 * in place of both terms */
-			struct ray rr = { offset_origin(&sp, mirror), vnorm(mirror) };
+			struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 			st->reflection++;
 			return vadd(color, trace_ray(sc, &rr, depth + 1, st));
 		}
@@ -192,13 +182,13 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 		}
 		if (any_positive(kt)) {
 			struct vec3 w = vadd(vscale(r->d, eta), vscale(n, eta * cos_i - sqrt(k)));
-			struct ray rt = { offset_origin(&sp, w), vnorm(w) };
+			struct ray rt = { ray_offset_origin(&sp, w), vnorm(w) };
 			st->refraction++;
 			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, st)));
 		}
 	}
 	if (any_positive(kr)) {
-		struct ray rr = { offset_origin(&sp, mirror), vnorm(mirror) };
+		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		st->reflection++;
 		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, st)));
 	}

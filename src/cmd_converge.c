@@ -762,7 +762,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	if (rc)
 		goto done;
 	t0 = clock_now();
-	accel_build(&r.sc, ACCEL_BVH);
+	accel_build(&r.sc.accel, &r.sc.geo, ACCEL_BVH);
 	double bvh_s = clock_now() - t0;
 	double fixed = lt.parse + lt.check + lt.eval + lower_s + bvh_s;
 	long cores = sysconf(_SC_NPROCESSORS_ONLN);

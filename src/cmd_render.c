@@ -26,7 +26,7 @@ struct render_args {
 	int pattern;                       /* -1: the scene's */
 	bool float32, stats, quiet;
 	int progress;                      /* -1: when standard error is a terminal */
-	enum accel accel;
+	enum accel_kind accel;
 	bool region;
 	long x0, y0, x1, y1;
 };
@@ -154,17 +154,17 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 	fprintf(stderr,
 	        "time: parse %.3fs  check %.3fs  evaluate %.3fs  load meshes %.3fs  load images %.3fs  build %s %.3fs"
 	        "  render %.3fs  write %.3fs\n",
-	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, sc->grid ? "grid" : "bvh", bvh_s,
+	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, sc->accel.grid ? "grid" : "bvh", bvh_s,
 	        render_s, write_s);
-	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu lights, %zu materials; ", sc->nspheres,
-	        sc->nplanes, sc->ntriangles, sc->nlights, sc->nmaterials);
-	if (sc->grid) {
+	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu lights, %zu materials; ", sc->geo.nspheres,
+	        sc->geo.nplanes, sc->geo.ntriangles, sc->nlights, sc->nmaterials);
+	if (sc->accel.grid) {
 		int cells[3];
 		size_t refs;
-		grid_shape(sc->grid, cells, &refs);
+		grid_shape(sc->accel.grid, cells, &refs);
 		fprintf(stderr, "grid %d x %d x %d cells, %zu references\n", cells[0], cells[1], cells[2], refs);
 	} else {
-		struct bvh_shape shape = bvh_shape(sc->bvh);
+		struct bvh_shape shape = bvh_shape(sc->accel.bvh);
 		fprintf(stderr, "bvh %zu nodes, depth %d, %zu triangle packets\n", shape.nodes, shape.depth, shape.packets);
 	}
 	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
@@ -226,7 +226,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	if (rc)
 		goto done;
 	double t0 = clock_now();
-	accel_build(&sc, a.accel);
+	accel_build(&sc.accel, &sc.geo, a.accel);
 	double bvh_s = clock_now() - t0;
 
 	ro.progress = a.quiet ? false : a.progress >= 0 ? a.progress : isatty(2);

@@ -4,40 +4,37 @@
 #ifndef SCN_BVH_H
 #define SCN_BVH_H
 
-#include "scene.h"
 #include "shape.h"
-
-enum accel { ACCEL_BVH, ACCEL_GRID, ACCEL_NONE }; /* ACCEL_GRID: see accel.h and grid.h */
 
 /* Children per node of the traversal's tree; and the primitives from which a tree is
  * taken to be too big for the caches, which changes how it is built and walked
  * (bvh_build.c's struct sah, bvh_traverse.c's prefetch_nodes()). */
 enum { BVH_WIDTH = 8, BVH_BIG_TREE = 1 << 18 };
 
-/* Builds over sc's spheres and triangles, on every core; the tree is the same whatever
- * their number. ACCEL_NONE makes one leaf of everything: brute force through the same
- * code, for tests and the scaling study. */
-struct bvh *bvh_build(const struct scene *sc, enum accel kind);
+/* Builds over geo's spheres and triangles, on every core; the tree is the same whatever
+ * their number. one_leaf makes one leaf of everything: brute force through the same
+ * code, for tests and the scaling study (--accel none). */
+struct bvh *bvh_build(const struct geometry *geo, bool one_leaf);
 void bvh_free(struct bvh *b);
-/* Puts sc's spheres and triangles in the order b's leaves list them (b built on sc) and
+/* Puts geo's spheres and triangles in the order b's leaves list them (b built on geo) and
  * renumbers the leaves to match: the primitives a ray tests one after another then share
  * cache lines, where a scene in random order costs a cache miss per primitive tested.
  * Then copies each leaf of two triangles or more into packets of four (tri_packet.h),
  * which the traversal tests four at once. The image stays the same: the same primitives
  * are tested in the same order, with the same arithmetic. Any other accelerator built on
- * sc is left pointing at the old numbers. */
-void bvh_reorder(struct bvh *b, struct scene *sc);
+ * geo is left pointing at the old numbers. */
+void bvh_reorder(struct bvh *b, struct geometry *geo);
 /* The most bytes bvh_build and bvh_reorder hold at once for n primitives of which
  * ntriangles are triangles (the build records, the nodes of a tree with one primitive a
  * leaf, the triangle packets). */
 uint64_t bvh_bytes(uint64_t n, uint64_t ntriangles);
 
 /* Closest hit with 0 < t < h->t over every primitive, planes included; updates h. */
-bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h);
+bool bvh_intersect(const struct bvh *b, const struct geometry *geo, const struct ray *r, struct hit *h);
 
 /* The light that passes along r from its origin to tmax: the product of k_t over every
  * surface crossed (POV-Ray's filtered shadow). Stops early once it is black. */
-struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax);
+struct vec3 bvh_transmittance(const struct bvh *b, const struct geometry *geo, const struct ray *r, double tmax);
 
 /* The tree's shape, for --stats and the tests: every node (the wide interior ones and
  * the leaves), the interior ones alone, the triangle packets, and the depth. */

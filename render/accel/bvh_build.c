@@ -72,7 +72,7 @@ struct sah {
 
 static inline double leaf_price(const struct sah *sah, struct kinds k)
 {
-	return (double)k.n[PRIM_SPHERE] * sah->sphere + (double)leaf_packets(k.n[PRIM_TRIANGLE]) * sah->packet;
+	return (double)k.n[SHAPE_SPHERE] * sah->sphere + (double)leaf_packets(k.n[SHAPE_TRIANGLE]) * sah->packet;
 }
 
 /* The binary tree goes to bin, one slot per place a split can fall: the node that
@@ -167,7 +167,7 @@ static struct split find_split(const struct build_ref *refs, size_t n, struct vb
 		v4f lo = v4load(refs[i].lo), hi = v4load(refs[i].hi);
 		int k[4];
 		bins_of(&bn, refs[i].centroid, k);
-		enum prim_kind kind = prim_kind(refs[i].prim);
+		enum shape_kind kind = shape_kind(refs[i].prim);
 		leaf.n[kind]++;
 		for (int axis = 0; axis < 3; axis++) {
 			counts[axis][k[axis]].n[kind]++;
@@ -300,25 +300,25 @@ static void run_task(void *ctx, size_t i)
 		b->bin[t->parent].kid[t->c] = ch;
 }
 
-/* The build record of primitive k of sc (nth_prim's numbering). */
-static void make_ref(const struct scene *sc, size_t k, struct build_ref *r)
+/* The build record of primitive k of geo (shape_nth's numbering). */
+static void make_ref(const struct geometry *geo, size_t k, struct build_ref *r)
 {
 	struct vec3 lo, hi;
-	r->prim = nth_prim(sc, k);
-	prim_bounds(sc, r->prim, &lo, &hi);
-	bool sphere = prim_kind(r->prim) == PRIM_SPHERE;
+	r->prim = shape_nth(geo, k);
+	shape_bounds(geo, r->prim, &lo, &hi);
+	bool sphere = shape_kind(r->prim) == SHAPE_SPHERE;
 	for (int a = 0; a < 3; a++) {
 		r->lo[a] = float_below(vget(&lo, a));
 		r->hi[a] = float_above(vget(&hi, a));
 		/* the centre of the exact bounds: a sphere's own, which its rounded bounds
 		 * would only approach */
-		r->centroid[a] = (float)(sphere ? vget(&sc->spheres[k].center, a) : 0.5 * (vget(&lo, a) + vget(&hi, a)));
+		r->centroid[a] = (float)(sphere ? vget(&geo->spheres[k].center, a) : 0.5 * (vget(&lo, a) + vget(&hi, a)));
 	}
 }
 
 /* The records of the primitives, made chunk by chunk, each chunk's bounds beside. */
 struct ref_chunks {
-	const struct scene *sc;
+	const struct geometry *geo;
 	struct build_ref *refs;
 	size_t n, nchunks;
 	struct bounds *bounds;
@@ -331,27 +331,27 @@ static void make_chunk(void *ctx, size_t c)
 	size_t lo, hi;
 	chunk_items(rc->n, rc->nchunks, c, &lo, &hi);
 	for (size_t k = lo; k < hi; k++) {
-		make_ref(rc->sc, k, &rc->refs[k]);
+		make_ref(rc->geo, k, &rc->refs[k]);
 		bounds_add(&bd, &rc->refs[k]);
 	}
 	rc->bounds[c] = bd;
 }
 
-struct bvh *bvh_build(const struct scene *sc, enum accel kind)
+struct bvh *bvh_build(const struct geometry *geo, bool one_leaf)
 {
 	struct bvh *bvh = xcalloc(1, sizeof *bvh);
-	size_t n = sc->nspheres + sc->ntriangles;
+	size_t n = geo->nspheres + geo->ntriangles;
 	bvh->nprims = n;
 	bvh->big = n >= BVH_BIG_TREE;
 	if (n == 0)
 		return bvh;
-	struct builder b = { .brute = kind == ACCEL_NONE };
+	struct builder b = { .brute = one_leaf };
 	b.sah = bvh->big ? (struct sah){ 2, 2, 2 } : (struct sah){ 1, 1, 2 };
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	/* the records in chunks, on all threads where the build will use them */
 	struct bounds chunk_bounds[MAX_CHUNKS];
-	struct ref_chunks rc = { sc, b.refs, n, chunks_of(n), chunk_bounds };
+	struct ref_chunks rc = { geo, b.refs, n, chunks_of(n), chunk_bounds };
 	parallel_for(rc.nchunks, make_chunk, &rc);
 	struct bounds root = { vbox_empty(), vbox_empty() };
 	for (size_t c = 0; c < rc.nchunks; c++) {

@@ -26,7 +26,7 @@ struct bvh_node {
 	uint32_t count[WIDTH]; /* child c: primitives in the leaf, and LEAF_DIRECT; 0: a node */
 };
 
-/* A leaf's count has LEAF_DIRECT set when its index is the prim_id() of its first
+/* A leaf's count has LEAF_DIRECT set when its index is the shape_id() of its first
  * primitive and the others follow it: once bvh_reorder has put the scene's primitives in
  * leaf order, true of every leaf of one kind. Otherwise (as built, or both kinds in the
  * leaf) its index is its first entry in prims, which lists the ids. On big scenes the
@@ -65,7 +65,7 @@ struct bvh {
 	struct child root;
 	struct bvh_node *nodes;    /* WIDTH-wide, cache-line aligned */
 	size_t nnodes, nboxes;
-	uint32_t *prims;   /* prim_id()s in leaf order; NULL once no leaf needs them */
+	uint32_t *prims;   /* shape_id()s in leaf order; NULL once no leaf needs them */
 	size_t nprims;
 	struct tri_packet *packets; /* of the LEAF_PACKED leaves, in leaf order */
 	size_t npackets;
@@ -101,7 +101,7 @@ static inline float vbox_area(struct vbox b)
 
 /* How many spheres and triangles a set holds: what its price as a leaf depends on. */
 struct kinds {
-	uint32_t n[2]; /* n[PRIM_SPHERE], n[PRIM_TRIANGLE] */
+	uint32_t n[2]; /* n[SHAPE_SPHERE], n[SHAPE_TRIANGLE] */
 };
 
 static inline void kinds_add(struct kinds *a, struct kinds b)

@@ -11,7 +11,7 @@ enum {
 	MIN_PACKED = 2,    /* triangles in a leaf from which they go to packets: at most n / 2 packets */
 };
 
-/* Makes a leaf (index, count) of prim_id()s of one kind, numbered in leaf order,
+/* Makes a leaf (index, count) of shape_id()s of one kind, numbered in leaf order,
  * LEAF_DIRECT; true when the leaf still needs its ids (both kinds in it). Nodes are left
  * alone. */
 static bool direct_leaf(const struct bvh *b, uint32_t *index, uint32_t *count)
@@ -20,7 +20,7 @@ static bool direct_leaf(const struct bvh *b, uint32_t *index, uint32_t *count)
 		return false;
 	const uint32_t *ids = b->prims + *index;
 	for (uint32_t i = 1; i < *count; i++)
-		if (prim_kind(ids[i]) != prim_kind(ids[0]))
+		if (shape_kind(ids[i]) != shape_kind(ids[0]))
 			return true;
 	*count |= LEAF_DIRECT;
 	*index = ids[0];
@@ -30,17 +30,17 @@ static bool direct_leaf(const struct bvh *b, uint32_t *index, uint32_t *count)
 /* Whether a leaf's triangles go to packets: a LEAF_DIRECT leaf of MIN_PACKED or more. */
 static bool packs(uint32_t index, uint32_t count)
 {
-	return (count & LEAF_DIRECT) && prim_kind(index) == PRIM_TRIANGLE && leaf_size(count) >= MIN_PACKED;
+	return (count & LEAF_DIRECT) && shape_kind(index) == SHAPE_TRIANGLE && leaf_size(count) >= MIN_PACKED;
 }
 
 /* Packs the leaf (index, count) from b->packets[*next] on, if it packs. */
-static void pack_leaf(struct bvh *b, const struct scene *sc, uint32_t *index, uint32_t *count, size_t *next)
+static void pack_leaf(struct bvh *b, const struct geometry *geo, uint32_t *index, uint32_t *count, size_t *next)
 {
 	if (!packs(*index, *count))
 		return;
-	uint32_t first = prim_index(*index), n = leaf_size(*count);
+	uint32_t first = shape_index(*index), n = leaf_size(*count);
 	for (uint32_t i = 0; i < n; i += PACKET_LANES)
-		tri_packet_fill(&b->packets[*next + i / PACKET_LANES], sc, first + i,
+		tri_packet_fill(&b->packets[*next + i / PACKET_LANES], geo, first + i,
 		                n - i < PACKET_LANES ? n - i : PACKET_LANES);
 	*index = (uint32_t)*next;
 	*count |= LEAF_PACKED;
@@ -58,7 +58,7 @@ static size_t packets_of(uint32_t index, uint32_t count)
  * then filled from where the chunks before it end. */
 struct packing {
 	struct bvh *b;
-	const struct scene *sc;
+	const struct geometry *geo;
 	size_t nchunks;
 	size_t *first;     /* chunk c's first packet (its count, until the sum) */
 	bool *ids_needed;  /* chunk c has a leaf that still needs its ids */
@@ -93,20 +93,20 @@ static void fill_packets(void *ctx, size_t c)
 	struct bvh *b = pk->b;
 	size_t lo, hi, next = pk->first[c];
 	if (c == 0)
-		pack_leaf(b, pk->sc, &b->root.index, &b->root.count, &next);
+		pack_leaf(b, pk->geo, &b->root.index, &b->root.count, &next);
 	chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		for (int k = 0; k < WIDTH; k++)
-			pack_leaf(b, pk->sc, &b->nodes[i].index[k], &b->nodes[i].count[k], &next);
+			pack_leaf(b, pk->geo, &b->nodes[i].index[k], &b->nodes[i].count[k], &next);
 }
 
 /* The leaves in their final form once the primitives are in leaf order: direct where
  * they can be, in packets where they pack; prims freed if no leaf needs it. */
-static void finalize_leaves(struct bvh *b, const struct scene *sc)
+static void finalize_leaves(struct bvh *b, const struct geometry *geo)
 {
 	size_t first[MAX_CHUNKS];
 	bool ids_needed[MAX_CHUNKS], any_ids = false;
-	struct packing pk = { b, sc, chunks_of(b->nnodes), first, ids_needed };
+	struct packing pk = { b, geo, chunks_of(b->nnodes), first, ids_needed };
 	parallel_for(pk.nchunks, count_packets, &pk);
 	size_t n = 0;
 	for (size_t c = 0; c < pk.nchunks; c++) {
@@ -138,7 +138,7 @@ static void finalize_leaves(struct bvh *b, const struct scene *sc)
  * it end, each entry of prims renumbered to its primitive's new place. */
 struct reordering {
 	struct bvh *b;
-	const struct scene *sc;       /* the primitives where they were */
+	const struct geometry *geo;       /* the primitives where they were */
 	struct sphere *spheres;
 	struct triangle *triangles;
 	size_t nchunks;
@@ -152,7 +152,7 @@ static void count_kinds(void *ctx, size_t c)
 	size_t lo, hi;
 	chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
-		k.n[prim_kind(ro->b->prims[i])]++;
+		k.n[shape_kind(ro->b->prims[i])]++;
 	ro->first[c] = k;
 }
 
@@ -164,21 +164,21 @@ static void copy_chunk(void *ctx, size_t c)
 	size_t lo, hi;
 	chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++) {
-		enum prim_kind kind = prim_kind(prims[i]);
-		uint32_t k = prim_index(prims[i]), to = next.n[kind]++;
-		if (kind == PRIM_SPHERE)
-			ro->spheres[to] = ro->sc->spheres[k];
+		enum shape_kind kind = shape_kind(prims[i]);
+		uint32_t k = shape_index(prims[i]), to = next.n[kind]++;
+		if (kind == SHAPE_SPHERE)
+			ro->spheres[to] = ro->geo->spheres[k];
 		else
-			ro->triangles[to] = ro->sc->triangles[k];
-		prims[i] = prim_id(kind, to);
+			ro->triangles[to] = ro->geo->triangles[k];
+		prims[i] = shape_id(kind, to);
 	}
 }
 
-void bvh_reorder(struct bvh *b, struct scene *sc)
+void bvh_reorder(struct bvh *b, struct geometry *geo)
 {
 	struct kinds first[MAX_CHUNKS];
-	struct reordering ro = { b, sc, sc->nspheres ? xmalloc(sc->nspheres * sizeof *ro.spheres) : NULL,
-		                 sc->ntriangles ? xmalloc(sc->ntriangles * sizeof *ro.triangles) : NULL,
+	struct reordering ro = { b, geo, geo->nspheres ? xmalloc(geo->nspheres * sizeof *ro.spheres) : NULL,
+		                 geo->ntriangles ? xmalloc(geo->ntriangles * sizeof *ro.triangles) : NULL,
 		                 chunks_of(b->nprims), first };
 	parallel_for(ro.nchunks, count_kinds, &ro);
 	struct kinds sum = { { 0, 0 } };
@@ -188,9 +188,9 @@ void bvh_reorder(struct bvh *b, struct scene *sc)
 		kinds_add(&sum, count);
 	}
 	parallel_for(ro.nchunks, copy_chunk, &ro);
-	free(sc->spheres);
-	free(sc->triangles);
-	sc->spheres = ro.spheres;
-	sc->triangles = ro.triangles;
-	finalize_leaves(b, sc);
+	free(geo->spheres);
+	free(geo->triangles);
+	geo->spheres = ro.spheres;
+	geo->triangles = ro.triangles;
+	finalize_leaves(b, geo);
 }

@@ -263,9 +263,9 @@ static inline __attribute__((always_inline)) void walk(const struct bvh *b, cons
 }
 
 struct closest_query {
-	const struct scene *sc;
+	const struct geometry *geo;
 	const struct ray *r;
-	struct tri_ray tr;
+	struct triangle_ray tr;
 	struct hit *h;
 	bool hit;
 };
@@ -276,22 +276,22 @@ static inline __attribute__((always_inline)) bool closest_leaf(const struct bvh 
 	struct closest_query *q = query;
 	if (count & LEAF_PACKED) {
 		for (uint32_t p = 0; p < leaf_packets(leaf_size(count)); p++)
-			q->hit |= tri_packet_intersect(&b->packets[index + p], q->sc, &q->tr, q->h);
+			q->hit |= tri_packet_intersect(&b->packets[index + p], q->geo, &q->tr, q->h);
 	} else {
 		const uint32_t *ids = leaf_ids(b, index, count);
 		for (uint32_t i = 0; i < leaf_size(count); i++)
-			q->hit |= prim_intersect(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, q->h);
+			q->hit |= shape_intersect(q->geo, leaf_prim(ids, index, i), q->r, &q->tr, q->h);
 	}
 	*tmax = q->h->t;
 	return false;
 }
 
-static inline __attribute__((always_inline)) bool intersect(const struct bvh *b, const struct scene *sc,
+static inline __attribute__((always_inline)) bool intersect(const struct bvh *b, const struct geometry *geo,
                                                             const struct ray *r, struct hit *h, bool prefetch)
 {
-	struct closest_query q = { .sc = sc, .r = r, .h = h, .hit = planes_intersect(sc, r, h) };
+	struct closest_query q = { .geo = geo, .r = r, .h = h, .hit = shape_planes_intersect(geo, r, h) };
 	if (b->nprims) {
-		tri_ray_for(sc, r, &q.tr);
+		shape_triangle_ray(geo, r, &q.tr);
 		double tmax = h->t;
 		walk(b, r, &tmax, closest_leaf, &q, true, prefetch);
 	}
@@ -302,21 +302,21 @@ static inline __attribute__((always_inline)) bool intersect(const struct bvh *b,
  * of their own: with both walks in one function, the one small trees take cost 0.6% more
  * instructions on the small bunny's rays and on the headline (GCC allocates registers
  * for a function as a whole). */
-static __attribute__((noinline)) bool intersect_big(const struct bvh *b, const struct scene *sc,
+static __attribute__((noinline)) bool intersect_big(const struct bvh *b, const struct geometry *geo,
                                                     const struct ray *r, struct hit *h)
 {
-	return intersect(b, sc, r, h, true);
+	return intersect(b, geo, r, h, true);
 }
 
-bool bvh_intersect(const struct bvh *b, const struct scene *sc, const struct ray *r, struct hit *h)
+bool bvh_intersect(const struct bvh *b, const struct geometry *geo, const struct ray *r, struct hit *h)
 {
-	return b->big ? intersect_big(b, sc, r, h) : intersect(b, sc, r, h, false);
+	return b->big ? intersect_big(b, geo, r, h) : intersect(b, geo, r, h, false);
 }
 
 struct shadow_query {
-	const struct scene *sc;
+	const struct geometry *geo;
 	const struct ray *r;
-	struct tri_ray tr;
+	struct triangle_ray tr;
 	struct vec3 pass;
 };
 
@@ -326,7 +326,7 @@ static inline __attribute__((always_inline)) bool shadow_leaf(const struct bvh *
 	struct shadow_query *q = query;
 	if (count & LEAF_PACKED) {
 		for (uint32_t p = 0; p < leaf_packets(leaf_size(count)); p++) {
-			q->pass = tri_packet_filter(&b->packets[index + p], q->sc, &q->tr, *tmax, q->pass);
+			q->pass = tri_packet_filter(&b->packets[index + p], q->geo, &q->tr, *tmax, q->pass);
 			if (vzero(q->pass))
 				return true;
 		}
@@ -334,32 +334,32 @@ static inline __attribute__((always_inline)) bool shadow_leaf(const struct bvh *
 	}
 	const uint32_t *ids = leaf_ids(b, index, count);
 	for (uint32_t i = 0; i < leaf_size(count); i++) {
-		q->pass = prim_filter(q->sc, leaf_prim(ids, index, i), q->r, &q->tr, *tmax, q->pass);
+		q->pass = shape_filter(q->geo, leaf_prim(ids, index, i), q->r, &q->tr, *tmax, q->pass);
 		if (vzero(q->pass))
 			return true;
 	}
 	return false;
 }
 
-static inline __attribute__((always_inline)) struct vec3 transmittance(const struct bvh *b, const struct scene *sc,
+static inline __attribute__((always_inline)) struct vec3 transmittance(const struct bvh *b, const struct geometry *geo,
                                                                         const struct ray *r, double tmax,
                                                                         bool prefetch)
 {
-	struct shadow_query q = { .sc = sc, .r = r, .pass = planes_filter(sc, r, tmax) };
+	struct shadow_query q = { .geo = geo, .r = r, .pass = shape_planes_filter(geo, r, tmax) };
 	if (vzero(q.pass) || !b->nprims)
 		return q.pass;
-	tri_ray_for(sc, r, &q.tr);
+	shape_triangle_ray(geo, r, &q.tr);
 	walk(b, r, &tmax, shadow_leaf, &q, false, prefetch);
 	return q.pass;
 }
 
-static __attribute__((noinline)) struct vec3 transmittance_big(const struct bvh *b, const struct scene *sc,
+static __attribute__((noinline)) struct vec3 transmittance_big(const struct bvh *b, const struct geometry *geo,
                                                                const struct ray *r, double tmax)
 {
-	return transmittance(b, sc, r, tmax, true);
+	return transmittance(b, geo, r, tmax, true);
 }
 
-struct vec3 bvh_transmittance(const struct bvh *b, const struct scene *sc, const struct ray *r, double tmax)
+struct vec3 bvh_transmittance(const struct bvh *b, const struct geometry *geo, const struct ray *r, double tmax)
 {
-	return b->big ? transmittance_big(b, sc, r, tmax) : transmittance(b, sc, r, tmax, false);
+	return b->big ? transmittance_big(b, geo, r, tmax) : transmittance(b, geo, r, tmax, false);
 }

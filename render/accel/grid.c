@@ -53,10 +53,10 @@ static inline size_t cell_index(const struct grid *g, const int c[3])
 	return ((size_t)c[2] * (size_t)g->n[1] + (size_t)c[1]) * (size_t)g->n[0] + (size_t)c[0];
 }
 
-static struct box prim_box(const struct scene *sc, uint32_t prim)
+static struct box prim_box(const struct geometry *geo, uint32_t prim)
 {
 	struct vec3 lo, hi;
-	prim_bounds(sc, prim, &lo, &hi);
+	shape_bounds(geo, prim, &lo, &hi);
 	/* centre -+ radius is rounded: one ulp outward holds the exact box */
 	struct box bx;
 	for (int k = 0; k < 3; k++) {
@@ -77,7 +77,7 @@ static void set_resolution(struct grid *g, double cells_per_unit)
 		g->inv_width[k] = extent > 0 ? g->n[k] / extent : 0;
 		/* lo + i width and the step of cell_of each carry a few roundings of numbers up to
 		 * |lo| + |hi| */
-		g->edge_err[k] = err_gamma(8) * (fabs(g->lo[k]) + fabs(g->hi[k]) + extent);
+		g->edge_err[k] = rounding_gamma(8) * (fabs(g->lo[k]) + fabs(g->hi[k]) + extent);
 	}
 }
 
@@ -110,10 +110,10 @@ uint64_t grid_bytes(uint64_t n)
 	       (MAX_REFS_PER_PRIM * n + ((uint64_t)1 << 20)) * sizeof(uint32_t);
 }
 
-struct grid *grid_build(const struct scene *sc)
+struct grid *grid_build(const struct geometry *geo)
 {
 	struct grid *g = xcalloc(1, sizeof *g);
-	size_t n = sc->nspheres + sc->ntriangles;
+	size_t n = geo->nspheres + geo->ntriangles;
 	if (n == 0)
 		return g;
 	struct box *boxes = xcalloc(n, sizeof *boxes);
@@ -122,7 +122,7 @@ struct grid *grid_build(const struct scene *sc)
 		g->hi[k] = -INFINITY;
 	}
 	for (size_t i = 0; i < n; i++) {
-		boxes[i] = prim_box(sc, nth_prim(sc, i));
+		boxes[i] = prim_box(geo, shape_nth(geo, i));
 		for (int k = 0; k < 3; k++) {
 			g->lo[k] = fmin(g->lo[k], boxes[i].lo[k]);
 			g->hi[k] = fmax(g->hi[k], boxes[i].hi[k]);
@@ -157,7 +157,7 @@ struct grid *grid_build(const struct scene *sc)
 	for (size_t i = n; i-- > 0;) {
 		cell_range(g, &boxes[i], first, last);
 		bool multi = first[0] != last[0] || first[1] != last[1] || first[2] != last[2];
-		uint32_t ref = nth_prim(sc, i) | (multi ? MULTI_CELL : 0);
+		uint32_t ref = shape_nth(geo, i) | (multi ? MULTI_CELL : 0);
 		for (c[2] = first[2]; c[2] <= last[2]; c[2]++)
 			for (c[1] = first[1]; c[1] <= last[1]; c[1]++)
 				for (c[0] = first[0]; c[0] <= last[0]; c[0]++)
@@ -196,7 +196,7 @@ struct walk {
 
 static double err_of(const struct walk *w, int k, double t)
 {
-	return w->slack[k] + err_gamma(4) * fabs(t);
+	return w->slack[k] + rounding_gamma(4) * fabs(t);
 }
 
 /* Where the ray crosses the edge between cells e - 1 and e along axis k. */
@@ -226,7 +226,7 @@ static bool walk_start(const struct grid *g, const struct ray *r, double tmax, s
 			t0 = t1;
 			t1 = tmp;
 		}
-		t1 *= 1 + 2 * err_gamma(3);
+		t1 *= 1 + 2 * rounding_gamma(3);
 		tnear = t0 > tnear ? t0 : tnear;
 		tfar = t1 < tfar ? t1 : tfar;
 	}
@@ -311,21 +311,21 @@ static int walk_next(const struct grid *g, struct walk *w, double tmax, size_t c
 	return n;
 }
 
-bool grid_intersect(const struct grid *g, const struct scene *sc, const struct ray *r, struct hit *h)
+bool grid_intersect(const struct grid *g, const struct geometry *geo, const struct ray *r, struct hit *h)
 {
-	bool hit = planes_intersect(sc, r, h);
+	bool hit = shape_planes_intersect(geo, r, h);
 	struct walk w;
 	if (!g->refs || !walk_start(g, r, h->t, &w))
 		return hit;
-	struct tri_ray tr;
-	tri_ray_for(sc, r, &tr);
+	struct triangle_ray tr;
+	shape_triangle_ray(geo, r, &tr);
 	size_t cells[4];
 	int n;
 	/* a primitive in several cells is tested in each: cheaper than remembering it */
 	while ((n = walk_next(g, &w, h->t, cells)) > 0)
 		for (int i = 0; i < n; i++)
 			for (uint32_t j = g->start[cells[i]]; j < g->start[cells[i] + 1]; j++)
-				hit |= prim_intersect(sc, g->refs[j] & ~MULTI_CELL, r, &tr, h);
+				hit |= shape_intersect(geo, g->refs[j] & ~MULTI_CELL, r, &tr, h);
 	return hit;
 }
 
@@ -368,8 +368,8 @@ static void mailbox_clear(void)
 }
 
 /* The filter of the grid's primitives along r; false when the mailbox overflowed. */
-static bool filter_walk(const struct grid *g, const struct scene *sc, const struct ray *r,
-                        const struct tri_ray *tr, double tmax, struct vec3 *pass)
+static bool filter_walk(const struct grid *g, const struct geometry *geo, const struct ray *r,
+                        const struct triangle_ray *tr, double tmax, struct vec3 *pass)
 {
 	struct walk w;
 	if (!walk_start(g, r, tmax, &w))
@@ -387,28 +387,28 @@ static bool filter_walk(const struct grid *g, const struct scene *sc, const stru
 					if (!fresh)
 						continue;
 				}
-				*pass = prim_filter(sc, ref & ~MULTI_CELL, r, tr, tmax, *pass);
+				*pass = shape_filter(geo, ref & ~MULTI_CELL, r, tr, tmax, *pass);
 				if (vzero(*pass))
 					return true;
 			}
 	return true;
 }
 
-struct vec3 grid_transmittance(const struct grid *g, const struct scene *sc, const struct ray *r, double tmax)
+struct vec3 grid_transmittance(const struct grid *g, const struct geometry *geo, const struct ray *r, double tmax)
 {
-	struct vec3 pass = planes_filter(sc, r, tmax);
+	struct vec3 pass = shape_planes_filter(geo, r, tmax);
 	if (vzero(pass) || !g->refs)
 		return pass;
 	struct vec3 planes = pass;
-	struct tri_ray tr;
-	tri_ray_for(sc, r, &tr);
-	bool complete = filter_walk(g, sc, r, &tr, tmax, &pass);
+	struct triangle_ray tr;
+	shape_triangle_ray(geo, r, &tr);
+	bool complete = filter_walk(g, geo, r, &tr, tmax, &pass);
 	mailbox_clear();
 	if (complete)
 		return pass;
 	/* more distinct primitives than the mailbox holds: every primitive, once each */
 	pass = planes;
-	for (size_t i = 0; i < sc->nspheres + sc->ntriangles && !vzero(pass); i++)
-		pass = prim_filter(sc, nth_prim(sc, i), r, &tr, tmax, pass);
+	for (size_t i = 0; i < geo->nspheres + geo->ntriangles && !vzero(pass); i++)
+		pass = shape_filter(geo, shape_nth(geo, i), r, &tr, tmax, pass);
 	return pass;
 }

@@ -36,7 +36,7 @@ static inline v4d v4d_set(double x)
 #define LANE_BITS(m) ((int)(((m)[0] & 1) | ((m)[1] & 2) | ((m)[2] & 4) | ((m)[3] & 8)))
 #endif
 
-/* max_abs3() of shape.c over the three vectors of v, lane by lane: the same comparisons,
+/* max_abs3() of triangle.c over the three vectors of v, lane by lane: the same comparisons,
  * so the same choices */
 static inline v4d lanes_max_abs3(const v4d v[3])
 {
@@ -47,7 +47,7 @@ static inline v4d lanes_max_abs3(const v4d v[3])
 	return (v4d)((mc & (v4l)m) | (~mc & (v4l)c));
 }
 
-void tri_packet_fill(struct tri_packet *pk, const struct scene *sc, uint32_t first, uint32_t n)
+void tri_packet_fill(struct tri_packet *pk, const struct geometry *geo, uint32_t first, uint32_t n)
 {
 	memset(pk, 0, sizeof *pk);
 	pk->lanes = n;
@@ -57,21 +57,21 @@ void tri_packet_fill(struct tri_packet *pk, const struct scene *sc, uint32_t fir
 		pk->tri[l] = k;
 		for (int v = 0; v < 3; v++)
 			for (int a = 0; a < 3; a++)
-				pk->p[v][a][l] = vget(&sc->vertices[sc->triangles[k].v[v]], a);
+				pk->p[v][a][l] = vget(&geo->vertices[geo->triangles[k].v[v]], a);
 	}
 }
 
 /* What the vector pass leaves for the lanes taken in order. */
 struct lanes {
 	int hit;      /* lanes hit at some t in (0, tmax) */
-	int on_edge;  /* lanes left to tri_ray_hit() */
+	int on_edge;  /* lanes left to triangle_intersect() */
 	double det[PACKET_LANES], tscaled[PACKET_LANES], t[PACKET_LANES], b1[PACKET_LANES], b2[PACKET_LANES];
 };
 
-/* tri_ray_hit()'s arithmetic in each lane, with h->t = tmax; it stops, as the scalar
+/* triangle_intersect()'s arithmetic in each lane, with h->t = tmax; it stops, as the scalar
  * test does, once no lane is left (most packets a ray reaches miss at the edge
  * functions). */
-static inline __attribute__((always_inline)) void test_lanes(const struct tri_packet *pk, const struct tri_ray *tr,
+static inline __attribute__((always_inline)) void test_lanes(const struct tri_packet *pk, const struct triangle_ray *tr,
                                                              double tmax, struct lanes *out)
 {
 	int kx = tr->k[0], ky = tr->k[1], kz = tr->k[2];
@@ -98,13 +98,13 @@ static inline __attribute__((always_inline)) void test_lanes(const struct tri_pa
 	for (int v = 0; v < 3; v++)
 		z[v] *= tr->sz;
 	v4d tscaled = e0 * z[0] + e1 * z[1] + e2 * z[2];
-	out->hit &= ~LANE_BITS((det == zero) | TRI_T_OUTSIDE(det, tscaled, tmax * det, zero));
+	out->hit &= ~LANE_BITS((det == zero) | TRIANGLE_T_OUTSIDE(det, tscaled, tmax * det, zero));
 	if (!out->hit)
 		return;
 	v4d inv = 1 / det;
 	v4d t = tscaled * inv;
 	v4d max_x = lanes_max_abs3(x), max_y = lanes_max_abs3(y), max_z = lanes_max_abs3(z);
-	v4d delta_t = TRI_DELTA_T(max_x, max_y, max_z, lanes_max_abs3(e), V4D_ABS(inv));
+	v4d delta_t = TRIANGLE_DELTA_T(max_x, max_y, max_z, lanes_max_abs3(e), V4D_ABS(inv));
 	out->hit &= LANE_BITS((t > delta_t) & (t < tmax));
 	if (!out->hit)
 		return;
@@ -116,7 +116,7 @@ static inline __attribute__((always_inline)) void test_lanes(const struct tri_pa
 	memcpy(out->b2, &b2, sizeof b2);
 }
 
-bool tri_packet_intersect(const struct tri_packet *pk, const struct scene *sc, const struct tri_ray *tr,
+bool tri_packet_intersect(const struct tri_packet *pk, const struct geometry *geo, const struct triangle_ray *tr,
                           struct hit *h)
 {
 	struct lanes ln;
@@ -126,23 +126,23 @@ bool tri_packet_intersect(const struct tri_packet *pk, const struct scene *sc, c
 		int l = __builtin_ctz((unsigned)todo);
 		uint32_t k = pk->tri[l];
 		if (ln.on_edge >> l & 1) {
-			if (!tri_ray_hit(tr, sc, k, h))
+			if (!triangle_intersect(tr, &geo->triangles[k], geo->vertices, h))
 				continue;
 		} else {
 			/* accepted against the tmax the lanes before left */
-			if (TRI_T_OUTSIDE(ln.det[l], ln.tscaled[l], h->t * ln.det[l], 0.0) || !(ln.t[l] < h->t))
+			if (TRIANGLE_T_OUTSIDE(ln.det[l], ln.tscaled[l], h->t * ln.det[l], 0.0) || !(ln.t[l] < h->t))
 				continue;
 			h->t = ln.t[l];
 			h->b1 = ln.b1[l];
 			h->b2 = ln.b2[l];
 		}
-		h->prim = prim_id(PRIM_TRIANGLE, k);
+		h->prim = shape_id(SHAPE_TRIANGLE, k);
 		found = true;
 	}
 	return found;
 }
 
-struct vec3 tri_packet_filter(const struct tri_packet *pk, const struct scene *sc, const struct tri_ray *tr,
+struct vec3 tri_packet_filter(const struct tri_packet *pk, const struct geometry *geo, const struct triangle_ray *tr,
                               double tmax, struct vec3 pass)
 {
 	struct lanes ln;
@@ -151,9 +151,9 @@ struct vec3 tri_packet_filter(const struct tri_packet *pk, const struct scene *s
 		int l = __builtin_ctz((unsigned)todo);
 		uint32_t k = pk->tri[l];
 		struct hit h = { .t = tmax };
-		if ((ln.on_edge >> l & 1) && !tri_ray_hit(tr, sc, k, &h))
+		if ((ln.on_edge >> l & 1) && !triangle_intersect(tr, &geo->triangles[k], geo->vertices, &h))
 			continue;
-		pass = vmul(pass, transmit_of(sc, sc->triangles[k].surface));
+		pass = vmul(pass, shape_transmit(geo, geo->triangles[k].surface));
 		if (vzero(pass))
 			break;
 	}

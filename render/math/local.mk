@@ -1,2 +1,2 @@
 # render/math/local.mk: the vector types, headers only.
-noinst_HEADERS = %D%/vec.h %D%/v4d.h %D%/v4f.h
+noinst_HEADERS = %D%/vec.h %D%/rounding.h %D%/v4d.h %D%/v4f.h

@@ -66,7 +66,7 @@ static void note(struct pov *p, const char *fmt, ...)
 static void material_ref(struct pov *p, uint32_t surface)
 {
 	FILE *f = p->f;
-	const struct surface *s = &p->sc->surfaces[surface];
+	const struct surface *s = &p->sc->geo.surfaces[surface];
 	fprintf(f, "material { scn_material_%u", (unsigned)s->material);
 	if (s->to_object >= 0 && p->sc->materials[s->material].checker) {
 		const double (*m)[4] = p->sc->affines[s->to_object].m;
@@ -88,14 +88,14 @@ static void material_ref(struct pov *p, uint32_t surface)
 static void triangle_body(struct pov *p, size_t i)
 {
 	const struct scene *sc = p->sc;
-	const struct triangle *t = &sc->triangles[i];
+	const struct triangle *t = &sc->geo.triangles[i];
 	FILE *f = p->f;
-	fputs(t->n[0] == NO_NORMALS ? "triangle { " : "smooth_triangle { ", f);
+	fputs(t->n[0] == TRIANGLE_FLAT ? "triangle { " : "smooth_triangle { ", f);
 	for (int k = 0; k < 3; k++) {
-		pov_vec(f, sc->vertices[t->v[k]]);
-		if (t->n[0] != NO_NORMALS) {
+		pov_vec(f, sc->geo.vertices[t->v[k]]);
+		if (t->n[0] != TRIANGLE_FLAT) {
 			fputs(", ", f);
-			pov_vec(f, sc->normals[t->n[k]]);
+			pov_vec(f, sc->geo.normals[t->n[k]]);
 		}
 		fputs(k < 2 ? ", " : " ", f);
 	}
@@ -104,7 +104,7 @@ static void triangle_body(struct pov *p, size_t i)
 static void write_triangle(struct pov *p, size_t i)
 {
 	triangle_body(p, i);
-	material_ref(p, p->sc->triangles[i].surface);
+	material_ref(p, p->sc->geo.triangles[i].surface);
 	fputs(" }\n", p->f);
 }
 
@@ -119,13 +119,13 @@ static void write_union(struct pov *p, size_t first, size_t last)
 		fputs("}\n", f);
 	}
 	fputs("  ", f);
-	material_ref(p, p->sc->triangles[first].surface);
+	material_ref(p, p->sc->geo.triangles[first].surface);
 	fputs("\n}\n", f);
 }
 
 static struct vec3 geometric_normal(const struct scene *sc, const struct triangle *t)
 {
-	struct vec3 a = sc->vertices[t->v[0]], b = sc->vertices[t->v[1]], c = sc->vertices[t->v[2]];
+	struct vec3 a = sc->geo.vertices[t->v[0]], b = sc->geo.vertices[t->v[1]], c = sc->geo.vertices[t->v[2]];
 	return vcross(vsub(b, a), vsub(c, a));
 }
 
@@ -138,32 +138,32 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 	size_t flat = 0, smooth = 0;
 	bool per_vertex = true;        /* normal k of a face is its vertex k's, shifted alike */
 	for (size_t i = first; i < last; i++) {
-		const struct triangle *t = &sc->triangles[i];
+		const struct triangle *t = &sc->geo.triangles[i];
 		for (int k = 0; k < 3; k++) {
 			vmin = t->v[k] < vmin ? t->v[k] : vmin;
 			vmax = t->v[k] > vmax ? t->v[k] : vmax;
-			if (t->n[0] != NO_NORMALS) {
+			if (t->n[0] != TRIANGLE_FLAT) {
 				nmin = t->n[k] < nmin ? t->n[k] : nmin;
 				nmax = t->n[k] > nmax ? t->n[k] : nmax;
 			}
 		}
-		if (t->n[0] == NO_NORMALS)
+		if (t->n[0] == TRIANGLE_FLAT)
 			flat++;
 		else
 			smooth++;
 	}
 	if (smooth)
 		for (size_t i = first; i < last && per_vertex; i++) {
-			const struct triangle *t = &sc->triangles[i];
+			const struct triangle *t = &sc->geo.triangles[i];
 			for (int k = 0; k < 3; k++)
-				per_vertex &= t->n[0] != NO_NORMALS && t->n[k] - nmin == t->v[k] - vmin;
+				per_vertex &= t->n[0] != TRIANGLE_FLAT && t->n[k] - nmin == t->v[k] - vmin;
 		}
 	per_vertex &= smooth && nmax - nmin == vmax - vmin;
 
 	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(vmax - vmin + 1));
 	for (uint32_t v = vmin; v <= vmax; v++) {
 		fputs(v % 4 == vmin % 4 ? ",\n    " : ", ", f);
-		pov_fvec(f, sc->vertices[v]);
+		pov_fvec(f, sc->geo.vertices[v]);
 	}
 	fputs(" }\n", f);
 	if (smooth) {
@@ -174,18 +174,18 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 		size_t k = 0;
 		for (uint32_t n = nmin; n <= nmax; n++, k++) {
 			fputs(k % 4 == 0 ? ",\n    " : ", ", f);
-			pov_fvec(f, sc->normals[n]);
+			pov_fvec(f, sc->geo.normals[n]);
 		}
 		for (size_t i = first; i < last; i++)
-			if (sc->triangles[i].n[0] == NO_NORMALS) {
+			if (sc->geo.triangles[i].n[0] == TRIANGLE_FLAT) {
 				fputs(k++ % 4 == 0 ? ",\n    " : ", ", f);
-				pov_fvec(f, vnorm(geometric_normal(sc, &sc->triangles[i])));
+				pov_fvec(f, vnorm(geometric_normal(sc, &sc->geo.triangles[i])));
 			}
 		fputs(" }\n", f);
 	}
 	fprintf(f, "  face_indices { %zu", last - first);
 	for (size_t i = first; i < last; i++) {
-		const uint32_t *v = sc->triangles[i].v;
+		const uint32_t *v = sc->geo.triangles[i].v;
 		fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", (unsigned long)(v[0] - vmin),
 		        (unsigned long)(v[1] - vmin), (unsigned long)(v[2] - vmin));
 	}
@@ -194,9 +194,9 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 		fprintf(f, "  normal_indices { %zu", last - first);
 		size_t extra = (size_t)(nmax - nmin + 1);
 		for (size_t i = first; i < last; i++) {
-			const uint32_t *n = sc->triangles[i].n;
+			const uint32_t *n = sc->geo.triangles[i].n;
 			unsigned long a, b, c;
-			if (n[0] == NO_NORMALS)
+			if (n[0] == TRIANGLE_FLAT)
 				a = b = c = (unsigned long)extra++;
 			else
 				a = n[0] - nmin, b = n[1] - nmin, c = n[2] - nmin;
@@ -205,7 +205,7 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 		fputs(" }\n", f);
 	}
 	fputs("  ", f);
-	material_ref(p, sc->triangles[first].surface);
+	material_ref(p, sc->geo.triangles[first].surface);
 	fputs("\n}\n", f);
 }
 
@@ -232,7 +232,7 @@ static bool closed_surface(const struct scene *sc, size_t first, size_t last)
 	struct edge *e = xmalloc(n * sizeof *e);
 	for (size_t i = first, k = 0; i < last; i++)
 		for (int j = 0; j < 3; j++, k++) {
-			uint32_t a = sc->triangles[i].v[j], b = sc->triangles[i].v[(j + 1) % 3];
+			uint32_t a = sc->geo.triangles[i].v[j], b = sc->geo.triangles[i].v[(j + 1) % 3];
 			e[k] = a < b ? (struct edge){ a, b, 0 } : (struct edge){ b, a, 1 };
 		}
 	qsort(e, n, sizeof *e, edge_cmp);
@@ -261,14 +261,14 @@ static struct vec3 object_point(const struct scene *sc, const struct surface *s,
  * the face off the plane by about 1e-7, to either side. */
 static bool on_checker_boundary(const struct scene *sc, size_t first, size_t last)
 {
-	const struct surface *s = &sc->surfaces[sc->triangles[first].surface];
+	const struct surface *s = &sc->geo.surfaces[sc->geo.triangles[first].surface];
 	const struct material *m = &sc->materials[s->material];
 	if (!m->checker)
 		return false;
 	for (size_t i = first; i < last; i++) {
 		struct vec3 c[3];
 		for (int k = 0; k < 3; k++)
-			c[k] = vscale(object_point(sc, s, sc->vertices[sc->triangles[i].v[k]]), 1 / m->checker_size);
+			c[k] = vscale(object_point(sc, s, sc->geo.vertices[sc->geo.triangles[i].v[k]]), 1 / m->checker_size);
 		for (int axis = 0; axis < 3; axis++) {
 			double a = vget(&c[0], axis), b = vget(&c[1], axis), d = vget(&c[2], axis);
 			double r = round(a);
@@ -283,7 +283,7 @@ static bool on_checker_boundary(const struct scene *sc, size_t first, size_t las
 static size_t run_end(const struct scene *sc, size_t first)
 {
 	size_t last = first + 1;
-	while (last < sc->ntriangles && sc->triangles[last].surface == sc->triangles[first].surface)
+	while (last < sc->geo.ntriangles && sc->geo.triangles[last].surface == sc->geo.triangles[first].surface)
 		last++;
 	return last;
 }
@@ -292,12 +292,12 @@ static size_t run_end(const struct scene *sc, size_t first)
  * normals lie strictly on one side of it ("Degenerate triangle"); mesh2 keeps any. */
 static bool smooth_kept(const struct scene *sc, size_t i)
 {
-	const struct triangle *t = &sc->triangles[i];
-	if (t->n[0] == NO_NORMALS)
+	const struct triangle *t = &sc->geo.triangles[i];
+	if (t->n[0] == TRIANGLE_FLAT)
 		return true;
 	struct vec3 g = geometric_normal(sc, t);
-	double d0 = vdot(g, sc->normals[t->n[0]]), d1 = vdot(g, sc->normals[t->n[1]]),
-	       d2 = vdot(g, sc->normals[t->n[2]]);
+	double d0 = vdot(g, sc->geo.normals[t->n[0]]), d1 = vdot(g, sc->geo.normals[t->n[1]]),
+	       d2 = vdot(g, sc->geo.normals[t->n[2]]);
 	return (d0 > 0 && d1 > 0 && d2 > 0) || (d0 < 0 && d1 < 0 && d2 < 0);
 }
 
@@ -308,10 +308,10 @@ static void analyse(struct pov *p)
 {
 	const struct scene *sc = p->sc;
 	size_t kept_as_mesh2 = 0, open = 0, boundary = 0, smooth_glass = 0;
-	for (size_t first = 0; first < sc->ntriangles;) {
+	for (size_t first = 0; first < sc->geo.ntriangles;) {
 		size_t last = run_end(sc, first);
-		const struct triangle *t = &sc->triangles[first];
-		const struct material *m = &sc->materials[sc->surfaces[t->surface].material];
+		const struct triangle *t = &sc->geo.triangles[first];
+		const struct material *m = &sc->materials[sc->geo.surfaces[t->surface].material];
 		bool all_kept = true;
 		for (size_t i = first; i < last && all_kept; i++)
 			all_kept = smooth_kept(sc, i);
@@ -331,7 +331,7 @@ static void analyse(struct pov *p)
 			open++;
 		else if (!vzero(m->transmit) && m->ior != 1)
 			for (size_t i = first; i < last; i++)
-				if (sc->triangles[i].n[0] != NO_NORMALS) {
+				if (sc->geo.triangles[i].n[0] != TRIANGLE_FLAT) {
 					smooth_glass++;
 					break;
 				}
@@ -356,15 +356,15 @@ static void analyse(struct pov *p)
 		        " it hits (not pixel-exact near their silhouettes)",
 		     smooth_glass);
 	size_t nested = 0, ntransmit = 0;
-	size_t *glass = xmalloc((sc->nspheres ? sc->nspheres : 1) * sizeof *glass);
-	for (size_t i = 0; i < sc->nspheres; i++)
-		if (!vzero(sc->materials[sc->surfaces[sc->spheres[i].surface].material].transmit))
+	size_t *glass = xmalloc((sc->geo.nspheres ? sc->geo.nspheres : 1) * sizeof *glass);
+	for (size_t i = 0; i < sc->geo.nspheres; i++)
+		if (!vzero(sc->materials[sc->geo.surfaces[sc->geo.spheres[i].surface].material].transmit))
 			glass[ntransmit++] = i;
 	/* pairs of transmitting spheres: a bounded search, enough for any hand-made scene */
 	for (size_t i = 0; i < ntransmit && ntransmit <= 4096; i++) {
-		const struct sphere *a = &sc->spheres[glass[i]];
+		const struct sphere *a = &sc->geo.spheres[glass[i]];
 		for (size_t j = 0; j < ntransmit; j++) {
-			const struct sphere *b = &sc->spheres[glass[j]];
+			const struct sphere *b = &sc->geo.spheres[glass[j]];
 			if (j != i && vlen(vsub(a->center, b->center)) < a->radius + b->radius) {
 				nested++;
 				break;
@@ -373,14 +373,14 @@ static void analyse(struct pov *p)
 	}
 	free(glass);
 	size_t touching = 0;
-	for (size_t i = 0; i < sc->nspheres; i++) {
-		const struct sphere *a = &sc->spheres[i];
+	for (size_t i = 0; i < sc->geo.nspheres; i++) {
+		const struct sphere *a = &sc->geo.spheres[i];
 		bool touch = false;
-		for (size_t k = 0; k < sc->nplanes && !touch; k++)
-			touch = fabs(fabs(vdot(sc->planes[k].normal, a->center) - sc->planes[k].offset) - a->radius) < CONTACT;
-		for (size_t j = 0; j < sc->nspheres && sc->nspheres <= 4096 && !touch; j++)
-			touch = j != i && fabs(vlen(vsub(a->center, sc->spheres[j].center)) - a->radius -
-			                       sc->spheres[j].radius) < CONTACT;
+		for (size_t k = 0; k < sc->geo.nplanes && !touch; k++)
+			touch = fabs(fabs(vdot(sc->geo.planes[k].normal, a->center) - sc->geo.planes[k].offset) - a->radius) < CONTACT;
+		for (size_t j = 0; j < sc->geo.nspheres && sc->geo.nspheres <= 4096 && !touch; j++)
+			touch = j != i && fabs(vlen(vsub(a->center, sc->geo.spheres[j].center)) - a->radius -
+			                       sc->geo.spheres[j].radius) < CONTACT;
 		touching += touch;
 	}
 	if (touching)
@@ -402,13 +402,13 @@ static void analyse(struct pov *p)
 static void scene_ball(const struct scene *sc, struct vec3 *centre, double *radius)
 {
 	struct vec3 lo = sc->camera.eye, hi = sc->camera.eye;
-	for (size_t i = 0; i < sc->nspheres; i++) {
-		lo = vmin(lo, vsub(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
-		hi = vmax(hi, vadd(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+	for (size_t i = 0; i < sc->geo.nspheres; i++) {
+		lo = vmin(lo, vsub(sc->geo.spheres[i].center, v3s(sc->geo.spheres[i].radius)));
+		hi = vmax(hi, vadd(sc->geo.spheres[i].center, v3s(sc->geo.spheres[i].radius)));
 	}
-	for (size_t i = 0; i < sc->nvertices; i++) {
-		lo = vmin(lo, sc->vertices[i]);
-		hi = vmax(hi, sc->vertices[i]);
+	for (size_t i = 0; i < sc->geo.nvertices; i++) {
+		lo = vmin(lo, sc->geo.vertices[i]);
+		hi = vmax(hi, sc->geo.vertices[i]);
 	}
 	for (size_t i = 0; i < sc->nlights; i++)
 		if (sc->lights[i].kind == LIGHT_POINT) {
@@ -417,8 +417,8 @@ static void scene_ball(const struct scene *sc, struct vec3 *centre, double *radi
 		}
 	*centre = vscale(vadd(lo, hi), 0.5);
 	double r = vlen(vsub(hi, lo)) / 2;
-	for (size_t i = 0; i < sc->nplanes; i++)
-		r = fmax(r, fabs(sc->planes[i].offset - vdot(sc->planes[i].normal, *centre)));
+	for (size_t i = 0; i < sc->geo.nplanes; i++)
+		r = fmax(r, fabs(sc->geo.planes[i].offset - vdot(sc->geo.planes[i].normal, *centre)));
 	*radius = r;
 }
 
@@ -655,11 +655,11 @@ static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 
 static void write_objects(struct pov *p)
 {
 	const struct scene *sc = p->sc;
-	for (size_t i = 0; i < sc->nspheres; i++)
-		write_vec_num_shape(p, "sphere", sc->spheres[i].center, sc->spheres[i].radius, sc->spheres[i].surface);
-	for (size_t i = 0; i < sc->nplanes; i++)
-		write_vec_num_shape(p, "plane", sc->planes[i].normal, sc->planes[i].offset, sc->planes[i].surface);
-	for (size_t first = 0; first < sc->ntriangles;) {
+	for (size_t i = 0; i < sc->geo.nspheres; i++)
+		write_vec_num_shape(p, "sphere", sc->geo.spheres[i].center, sc->geo.spheres[i].radius, sc->geo.spheres[i].surface);
+	for (size_t i = 0; i < sc->geo.nplanes; i++)
+		write_vec_num_shape(p, "plane", sc->geo.planes[i].normal, sc->geo.planes[i].offset, sc->geo.planes[i].surface);
+	for (size_t first = 0; first < sc->geo.ntriangles;) {
 		size_t last = run_end(sc, first);
 		if (p->how[first] == WRITE_TRIANGLE)
 			write_triangle(p, first);
@@ -688,7 +688,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 			note(&p, "// The skybox image has 32-bit float channels: POV-Ray reads OpenEXR as half floats, so"
 			         " its sky differs by up to about 2.4e-4 of each value (half-float images agree exactly)");
 	}
-	p.how = xcalloc(sc->ntriangles ? sc->ntriangles : 1, sizeof *p.how);
+	p.how = xcalloc(sc->geo.ntriangles ? sc->geo.ntriangles : 1, sizeof *p.how);
 	analyse(&p);
 	write_header(&p);
 	write_camera(&p);

@@ -1,12 +1,12 @@
-/* test_bvh.c: the BVH (render/bvh_*.c) against brute force. Random scenes are built
+/* test_bvh.c: the BVH (render/accel/bvh_*.c) against brute force. Random scenes are built
  * directly as struct scene: spheres of random radii down to 1e-6, random triangles
  * including long thin ones, fans and grids that share edges and vertices, and planes.
  * For many rays (origins inside and outside the scene, on box faces and on vertices;
  * random, axis-aligned and +0/-0 directions) these answers must agree:
  *   ref   a plain loop over every primitive, with no bounding box at all;
- *   none  bvh_build(ACCEL_NONE): one leaf, through the traversal code;
- *   bvh   bvh_build(ACCEL_BVH);
- *   grid  grid_build (render/grid.c), walked cell by cell.
+ *   none  bvh_build(one_leaf): one leaf, through the traversal code;
+ *   bvh   bvh_build();
+ *   grid  grid_build (render/accel/grid.c), walked cell by cell.
  * And one more must be bvh's to the bit (same_answer): the same tree over a copy of the
  * scene reordered by bvh_reorder, whose triangle leaves are packets tested four at once.
  *
@@ -15,7 +15,7 @@
  * involves no arithmetic; the BVH (or grid) changes only the order of the tests and which
  * primitives get tested. So when one primitive is closest by a clear margin all three
  * agree bitwise, and the test demands it. Order can matter only between candidates a
- * few ulps apart: ray_triangle's early-out compares tscaled against h->t * det, rounded
+ * few ulps apart: triangle_intersect's early-out compares tscaled against h->t * det, rounded
  * differently from t = tscaled / det, and a box's entry distance is compared against
  * h->t with its own rounding. So two answers may differ only when both name different
  * primitives, each of which alone really is hit at the t reported, and those t are
@@ -67,13 +67,14 @@ static void builder_init(struct builder *b)
 {
 	memset(b, 0, sizeof *b);
 	b->sc.materials = xcalloc(NMAT, sizeof *b->sc.materials);
-	b->sc.surfaces = xcalloc(NMAT, sizeof *b->sc.surfaces);
-	b->sc.nmaterials = b->sc.nsurfaces = NMAT;
+	b->sc.geo.surfaces = xcalloc(NMAT, sizeof *b->sc.geo.surfaces);
+	b->sc.geo.transmit = xcalloc(NMAT, sizeof *b->sc.geo.transmit);
+	b->sc.nmaterials = b->sc.geo.nsurfaces = b->sc.geo.ntransmit = NMAT;
 	for (int i = 0; i < NMAT; i++) {
-		b->sc.materials[i].transmit = v3a(transmit_of_mat[i]);
+		b->sc.materials[i].transmit = b->sc.geo.transmit[i] = v3a(transmit_of_mat[i]);
 		b->sc.materials[i].diffuse = v3s(0.8);
 		b->sc.materials[i].ior = 1;
-		b->sc.surfaces[i] = (struct surface){ (uint32_t)i, -1 };
+		b->sc.geo.surfaces[i] = (struct surface){ (uint32_t)i, -1 };
 	}
 	b->sc.max_depth = 5;
 }
@@ -86,22 +87,22 @@ static uint32_t rand_surface(void)
 
 static void add_sphere(struct builder *b, struct vec3 c, double r)
 {
-	xgrow((void **)&b->sc.spheres, &b->cap_s, b->sc.nspheres + 1, sizeof *b->sc.spheres);
-	b->sc.spheres[b->sc.nspheres++] = (struct sphere){ c, r, rand_surface() };
+	xgrow((void **)&b->sc.geo.spheres, &b->cap_s, b->sc.geo.nspheres + 1, sizeof *b->sc.geo.spheres);
+	b->sc.geo.spheres[b->sc.geo.nspheres++] = (struct sphere){ c, r, rand_surface() };
 }
 
 static uint32_t add_vertex(struct builder *b, struct vec3 v)
 {
-	xgrow((void **)&b->sc.vertices, &b->cap_v, b->sc.nvertices + 1, sizeof *b->sc.vertices);
-	b->sc.vertices[b->sc.nvertices] = v;
-	return (uint32_t)b->sc.nvertices++;
+	xgrow((void **)&b->sc.geo.vertices, &b->cap_v, b->sc.geo.nvertices + 1, sizeof *b->sc.geo.vertices);
+	b->sc.geo.vertices[b->sc.geo.nvertices] = v;
+	return (uint32_t)b->sc.geo.nvertices++;
 }
 
 static void add_tri_idx(struct builder *b, uint32_t i, uint32_t j, uint32_t k)
 {
-	xgrow((void **)&b->sc.triangles, &b->cap_t, b->sc.ntriangles + 1, sizeof *b->sc.triangles);
-	b->sc.triangles[b->sc.ntriangles++] =
-		(struct triangle){ { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, rand_surface() };
+	xgrow((void **)&b->sc.geo.triangles, &b->cap_t, b->sc.geo.ntriangles + 1, sizeof *b->sc.geo.triangles);
+	b->sc.geo.triangles[b->sc.geo.ntriangles++] =
+		(struct triangle){ { i, j, k }, { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT }, rand_surface() };
 }
 
 static void add_triangle(struct builder *b, struct vec3 p0, struct vec3 p1, struct vec3 p2)
@@ -112,13 +113,13 @@ static void add_triangle(struct builder *b, struct vec3 p0, struct vec3 p1, stru
 
 static void add_plane(struct builder *b, struct vec3 n, double offset)
 {
-	xgrow((void **)&b->sc.planes, &b->cap_p, b->sc.nplanes + 1, sizeof *b->sc.planes);
-	b->sc.planes[b->sc.nplanes++] = (struct plane){ vnorm(n), offset, rand_surface() };
+	xgrow((void **)&b->sc.geo.planes, &b->cap_p, b->sc.geo.nplanes + 1, sizeof *b->sc.geo.planes);
+	b->sc.geo.planes[b->sc.geo.nplanes++] = (struct plane){ vnorm(n), offset, rand_surface() };
 }
 
 static size_t nprims(const struct scene *sc)
 {
-	return sc->nspheres + sc->ntriangles;
+	return sc->geo.nspheres + sc->geo.ntriangles;
 }
 
 /* A triangle fan of k triangles around a (raised) centre. */
@@ -141,7 +142,7 @@ static void add_fan(struct builder *b, struct vec3 c, double radius, int k)
 /* An n x n grid of quads, each split in two, with random heights: shared edges. */
 static void add_grid(struct builder *b, struct vec3 origin, double cell, int n, bool lattice)
 {
-	uint32_t base = (uint32_t)b->sc.nvertices;
+	uint32_t base = (uint32_t)b->sc.geo.nvertices;
 	for (int j = 0; j <= n; j++)
 		for (int i = 0; i <= n; i++) {
 			double h = lattice ? (double)irand(3) * cell : urange(-0.3, 0.3) * cell;
@@ -213,13 +214,13 @@ static void scene_bounds(const struct scene *sc, struct vec3 *lo, struct vec3 *h
 {
 	*lo = v3s(INFINITY);
 	*hi = v3s(-INFINITY);
-	for (size_t i = 0; i < sc->nspheres; i++) {
-		*lo = vmin(*lo, vsub(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
-		*hi = vmax(*hi, vadd(sc->spheres[i].center, v3s(sc->spheres[i].radius)));
+	for (size_t i = 0; i < sc->geo.nspheres; i++) {
+		*lo = vmin(*lo, vsub(sc->geo.spheres[i].center, v3s(sc->geo.spheres[i].radius)));
+		*hi = vmax(*hi, vadd(sc->geo.spheres[i].center, v3s(sc->geo.spheres[i].radius)));
 	}
-	for (size_t i = 0; i < sc->nvertices; i++) {
-		*lo = vmin(*lo, sc->vertices[i]);
-		*hi = vmax(*hi, sc->vertices[i]);
+	for (size_t i = 0; i < sc->geo.nvertices; i++) {
+		*lo = vmin(*lo, sc->geo.vertices[i]);
+		*hi = vmax(*hi, sc->geo.vertices[i]);
 	}
 }
 
@@ -228,19 +229,19 @@ static void scene_bounds(const struct scene *sc, struct vec3 *lo, struct vec3 *h
 static bool ref_intersect(const struct scene *sc, const struct ray *r, struct hit *h)
 {
 	bool hit = false;
-	for (size_t i = 0; i < sc->nplanes; i++)
-		if (ray_plane(&sc->planes[i], r, h)) {
-			h->prim = prim_id(PRIM_PLANE, (uint32_t)i);
+	for (size_t i = 0; i < sc->geo.nplanes; i++)
+		if (plane_intersect(&sc->geo.planes[i], r, h)) {
+			h->prim = shape_id(SHAPE_PLANE, (uint32_t)i);
 			hit = true;
 		}
-	for (size_t i = 0; i < sc->nspheres; i++)
-		if (ray_sphere(&sc->spheres[i], r, h)) {
-			h->prim = prim_id(PRIM_SPHERE, (uint32_t)i);
+	for (size_t i = 0; i < sc->geo.nspheres; i++)
+		if (sphere_intersect(&sc->geo.spheres[i], r, h)) {
+			h->prim = shape_id(SHAPE_SPHERE, (uint32_t)i);
 			hit = true;
 		}
-	for (size_t i = 0; i < sc->ntriangles; i++)
-		if (ray_triangle(sc, i, r, h)) {
-			h->prim = prim_id(PRIM_TRIANGLE, (uint32_t)i);
+	for (size_t i = 0; i < sc->geo.ntriangles; i++)
+		if (triangle_intersect_ray(&sc->geo.triangles[i], sc->geo.vertices, r, h)) {
+			h->prim = shape_id(SHAPE_TRIANGLE, (uint32_t)i);
 			hit = true;
 		}
 	return hit;
@@ -248,27 +249,27 @@ static bool ref_intersect(const struct scene *sc, const struct ray *r, struct hi
 
 static struct vec3 kt_of(const struct scene *sc, uint32_t surface)
 {
-	return sc->materials[sc->surfaces[surface].material].transmit;
+	return sc->materials[sc->geo.surfaces[surface].material].transmit;
 }
 
 static struct vec3 ref_transmittance(const struct scene *sc, const struct ray *r, double tmax)
 {
 	struct vec3 pass = v3s(1);
-	for (size_t i = 0; i < sc->nplanes; i++) {
+	for (size_t i = 0; i < sc->geo.nplanes; i++) {
 		struct hit h = { .t = tmax };
-		if (ray_plane(&sc->planes[i], r, &h))
-			pass = vmul(pass, kt_of(sc, sc->planes[i].surface));
+		if (plane_intersect(&sc->geo.planes[i], r, &h))
+			pass = vmul(pass, kt_of(sc, sc->geo.planes[i].surface));
 	}
-	for (size_t i = 0; i < sc->nspheres; i++) {
+	for (size_t i = 0; i < sc->geo.nspheres; i++) {
 		double t[2];
-		int n = ray_sphere_crossings(&sc->spheres[i], r, tmax, t);
+		int n = sphere_crossings(&sc->geo.spheres[i], r, tmax, t);
 		for (int c = 0; c < n; c++)
-			pass = vmul(pass, kt_of(sc, sc->spheres[i].surface));
+			pass = vmul(pass, kt_of(sc, sc->geo.spheres[i].surface));
 	}
-	for (size_t i = 0; i < sc->ntriangles; i++) {
+	for (size_t i = 0; i < sc->geo.ntriangles; i++) {
 		struct hit h = { .t = tmax };
-		if (ray_triangle(sc, i, r, &h))
-			pass = vmul(pass, kt_of(sc, sc->triangles[i].surface));
+		if (triangle_intersect_ray(&sc->geo.triangles[i], sc->geo.vertices, r, &h))
+			pass = vmul(pass, kt_of(sc, sc->geo.triangles[i].surface));
 	}
 	return pass;
 }
@@ -277,11 +278,11 @@ static struct vec3 ref_transmittance(const struct scene *sc, const struct ray *r
 static double alone_t(const struct scene *sc, uint32_t prim, const struct ray *r)
 {
 	struct hit h = { .t = INFINITY };
-	uint32_t i = prim_index(prim);
-	switch (prim_kind(prim)) {
-	case PRIM_SPHERE: ray_sphere(&sc->spheres[i], r, &h); break;
-	case PRIM_TRIANGLE: ray_triangle(sc, i, r, &h); break;
-	case PRIM_PLANE: ray_plane(&sc->planes[i], r, &h); break;
+	uint32_t i = shape_index(prim);
+	switch (shape_kind(prim)) {
+	case SHAPE_SPHERE: sphere_intersect(&sc->geo.spheres[i], r, &h); break;
+	case SHAPE_TRIANGLE: triangle_intersect_ray(&sc->geo.triangles[i], sc->geo.vertices, r, &h); break;
+	case SHAPE_PLANE: plane_intersect(&sc->geo.planes[i], r, &h); break;
 	}
 	return h.t;
 }
@@ -344,9 +345,9 @@ struct accels {
 
 static void accels_build(const struct scene *sc, struct accels *a)
 {
-	a->none = bvh_build(sc, ACCEL_NONE);
-	a->bvh = bvh_build(sc, ACCEL_BVH);
-	a->grid = grid_build(sc);
+	a->none = bvh_build(&sc->geo, true);
+	a->bvh = bvh_build(&sc->geo, false);
+	a->grid = grid_build(&sc->geo);
 }
 
 static void accels_free(struct accels *a)
@@ -359,9 +360,9 @@ static void accels_free(struct accels *a)
 static bool answer_hit(const struct accels *a, int k, const struct scene *sc, const struct ray *r, struct hit *h)
 {
 	switch (k) {
-	case NONE: return bvh_intersect(a->none, sc, r, h);
-	case BVH: return bvh_intersect(a->bvh, sc, r, h);
-	case GRID: return grid_intersect(a->grid, sc, r, h);
+	case NONE: return bvh_intersect(a->none, &sc->geo, r, h);
+	case BVH: return bvh_intersect(a->bvh, &sc->geo, r, h);
+	case GRID: return grid_intersect(a->grid, &sc->geo, r, h);
 	default: return ref_intersect(sc, r, h);
 	}
 }
@@ -370,9 +371,9 @@ static struct vec3 answer_filter(const struct accels *a, int k, const struct sce
                                  double tmax)
 {
 	switch (k) {
-	case NONE: return bvh_transmittance(a->none, sc, r, tmax);
-	case BVH: return bvh_transmittance(a->bvh, sc, r, tmax);
-	case GRID: return grid_transmittance(a->grid, sc, r, tmax);
+	case NONE: return bvh_transmittance(a->none, &sc->geo, r, tmax);
+	case BVH: return bvh_transmittance(a->bvh, &sc->geo, r, tmax);
+	case GRID: return grid_transmittance(a->grid, &sc->geo, r, tmax);
 	default: return ref_transmittance(sc, r, tmax);
 	}
 }
@@ -446,12 +447,12 @@ static struct vec3 point_on_prim(const struct scene *sc)
 {
 	size_t n = nprims(sc);
 	size_t k = (size_t)(next_u64() % n);
-	if (k < sc->nspheres) {
-		const struct sphere *s = &sc->spheres[k];
+	if (k < sc->geo.nspheres) {
+		const struct sphere *s = &sc->geo.spheres[k];
 		return irand(2) ? s->center : vadd(s->center, vscale(rand_unit(), s->radius * urand()));
 	}
-	const struct triangle *t = &sc->triangles[k - sc->nspheres];
-	struct vec3 a = sc->vertices[t->v[0]], b = sc->vertices[t->v[1]], c = sc->vertices[t->v[2]];
+	const struct triangle *t = &sc->geo.triangles[k - sc->geo.nspheres];
+	struct vec3 a = sc->geo.vertices[t->v[0]], b = sc->geo.vertices[t->v[1]], c = sc->geo.vertices[t->v[2]];
 	switch (irand(4)) {
 	case 0: return a; /* a vertex */
 	case 1: return vadd(a, vscale(vsub(b, a), urand())); /* an edge */
@@ -484,13 +485,13 @@ static void shape_of(const struct bvh *b, size_t *nodes, int *depth)
 static void prim_geometry(const struct scene *sc, uint32_t prim, double g[9])
 {
 	memset(g, 0, 9 * sizeof *g);
-	uint32_t i = prim_index(prim);
-	if (prim_kind(prim) == PRIM_SPHERE) {
-		const struct sphere *s = &sc->spheres[i];
+	uint32_t i = shape_index(prim);
+	if (shape_kind(prim) == SHAPE_SPHERE) {
+		const struct sphere *s = &sc->geo.spheres[i];
 		g[0] = s->center.x, g[1] = s->center.y, g[2] = s->center.z, g[3] = s->radius;
-	} else if (prim_kind(prim) == PRIM_TRIANGLE) {
+	} else if (shape_kind(prim) == SHAPE_TRIANGLE) {
 		for (int k = 0; k < 3; k++) {
-			struct vec3 v = sc->vertices[sc->triangles[i].v[k]];
+			struct vec3 v = sc->geo.vertices[sc->geo.triangles[i].v[k]];
 			g[3 * k] = v.x, g[3 * k + 1] = v.y, g[3 * k + 2] = v.z;
 		}
 	}
@@ -509,10 +510,10 @@ static void answer_of(const struct bvh *bvh, const struct scene *sc, const struc
                       struct answer *a)
 {
 	a->h = (struct hit){ .t = tmax, .prim = UINT32_MAX };
-	a->found = bvh_intersect(bvh, sc, r, &a->h);
+	a->found = bvh_intersect(bvh, &sc->geo, r, &a->h);
 	prim_geometry(sc, a->h.prim, a->geom);
-	a->pass[0] = bvh_transmittance(bvh, sc, r, tmax);
-	a->pass[1] = bvh_transmittance(bvh, sc, r, INFINITY);
+	a->pass[0] = bvh_transmittance(bvh, &sc->geo, r, tmax);
+	a->pass[1] = bvh_transmittance(bvh, &sc->geo, r, INFINITY);
 }
 
 /* The same answer to the bit: the same geometry hit at the same t and barycentrics, the
@@ -534,14 +535,14 @@ static bool same_answer(const struct answer *a, const struct answer *b)
 static struct bvh *reordered_copy(const struct scene *sc, struct scene *copy)
 {
 	*copy = *sc;
-	copy->spheres = xmalloc(sc->nspheres * sizeof *copy->spheres);
-	copy->triangles = xmalloc(sc->ntriangles * sizeof *copy->triangles);
-	if (sc->nspheres) /* memcpy from NULL is undefined, even of nothing */
-		memcpy(copy->spheres, sc->spheres, sc->nspheres * sizeof *copy->spheres);
-	if (sc->ntriangles)
-		memcpy(copy->triangles, sc->triangles, sc->ntriangles * sizeof *copy->triangles);
-	struct bvh *bvh = bvh_build(copy, ACCEL_BVH);
-	bvh_reorder(bvh, copy);
+	copy->geo.spheres = xmalloc(sc->geo.nspheres * sizeof *copy->geo.spheres);
+	copy->geo.triangles = xmalloc(sc->geo.ntriangles * sizeof *copy->geo.triangles);
+	if (sc->geo.nspheres) /* memcpy from NULL is undefined, even of nothing */
+		memcpy(copy->geo.spheres, sc->geo.spheres, sc->geo.nspheres * sizeof *copy->geo.spheres);
+	if (sc->geo.ntriangles)
+		memcpy(copy->geo.triangles, sc->geo.triangles, sc->geo.ntriangles * sizeof *copy->geo.triangles);
+	struct bvh *bvh = bvh_build(&copy->geo, false);
+	bvh_reorder(bvh, &copy->geo);
 	return bvh;
 }
 
@@ -582,7 +583,7 @@ static void compare_scene(const struct scene *sc, long nrays, double min_hits, b
 		case 0: case 1: r.o = rand_in_box(lo, hi); break;                       /* inside */
 		case 2: r.o = vadd(mid, vscale(rand_unit(), extent * urange(1, 4))); break; /* outside */
 		case 3:                                                                   /* on a vertex */
-			r.o = sc->nvertices ? sc->vertices[next_u64() % sc->nvertices] : rand_in_box(lo, hi);
+			r.o = sc->geo.nvertices ? sc->geo.vertices[next_u64() % sc->geo.nvertices] : rand_in_box(lo, hi);
 			break;
 		case 4: r.o = n ? point_on_prim(sc) : mid; break;                         /* on a surface */
 		default:                                                                  /* on box faces */
@@ -620,8 +621,8 @@ static void compare_scene(const struct scene *sc, long nrays, double min_hits, b
 	}
 	CHECK(packed_bad == 0);
 	bvh_free(packed);
-	free(copy.spheres);
-	free(copy.triangles);
+	free(copy.geo.spheres);
+	free(copy.geo.triangles);
 	if (getenv("TEST_BVH_VERBOSE"))
 		fprintf(stderr, "%s: %ld rays, %ld hits; %ld exact ties named different primitives, %ld near ties "
 		        "(within %d ulps) differed\n", what, ty.rays, ty.hits, ty.ties, ty.near, NEAR_ULPS);
@@ -671,7 +672,7 @@ static void test_signed_zero_on_face(void)
 	builder_init(&b);
 	/* edge A-B lies in the planes x = 0 and y = 0, the root box's lo faces */
 	add_triangle(&b, v3(0, 0, 0), v3(0, 0, 2), v3(1, 1, 1));
-	b.sc.triangles[0].surface = 0;
+	b.sc.geo.triangles[0].surface = 0;
 	struct accels acc;
 	accels_build(&b.sc, &acc);
 	/* and a denormal x, whose reciprocal overflows */
@@ -716,7 +717,7 @@ static void test_same_centroid(void)
 	/* and 300 identical spheres */
 	for (int i = 0; i < 300; i++)
 		add_sphere(&b, c, 0.5);
-	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+	struct bvh *bvh = bvh_build(&b.sc.geo, false);
 	size_t nodes;
 	int depth;
 	shape_of(bvh, &nodes, &depth);
@@ -731,7 +732,7 @@ static void test_same_centroid(void)
 	builder_init(&b);
 	for (int i = 0; i < 200; i++)
 		add_triangle(&b, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0));
-	bvh = bvh_build(&b.sc, ACCEL_BVH);
+	bvh = bvh_build(&b.sc.geo, false);
 	shape_of(bvh, &nodes, &depth);
 	CHECK(depth == 0 && nodes == 1);
 	bvh_free(bvh);
@@ -773,8 +774,8 @@ static void test_far_offset(void)
 		struct accels acc;
 		accels_build(&b.sc, &acc);
 		long missed = 0;
-		for (size_t i = 0; i < b.sc.nspheres; i++) {
-			struct vec3 c = b.sc.spheres[i].center;
+		for (size_t i = 0; i < b.sc.geo.nspheres; i++) {
+			struct vec3 c = b.sc.geo.spheres[i].center;
 			struct ray r;
 			r.o = vadd(c, vscale(rand_unit(), 3));
 			r.d = vnorm(vsub(c, r.o));
@@ -784,7 +785,7 @@ static void test_far_offset(void)
 			}
 		}
 		if (missed)
-			fprintf(stderr, "%s: %ld of %zu rays aimed at sphere centres missed\n", what, missed, b.sc.nspheres);
+			fprintf(stderr, "%s: %ld of %zu rays aimed at sphere centres missed\n", what, missed, b.sc.geo.nspheres);
 		CHECK(missed == 0);
 		accels_free(&acc);
 		scene_free(&b.sc);
@@ -800,7 +801,7 @@ static void test_deep(void)
 	double x = 1;
 	for (int i = 0; i < 1500; i++, x *= 1.4)
 		add_sphere(&b, v3(x, 0, 0), x * 0.1);
-	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+	struct bvh *bvh = bvh_build(&b.sc.geo, false);
 	size_t nodes;
 	int depth;
 	shape_of(bvh, &nodes, &depth);
@@ -810,14 +811,14 @@ static void test_deep(void)
 	for (int i = 0; i < 200; i++) {
 		struct ray r = { v3(-1, urange(-0.01, 0.01), urange(-0.01, 0.01)), v3(1, 0, 0) };
 		struct hit h = { .t = INFINITY }, h0 = { .t = INFINITY };
-		bool f = bvh_intersect(bvh, &b.sc, &r, &h), f0 = ref_intersect(&b.sc, &r, &h0);
+		bool f = bvh_intersect(bvh, &b.sc.geo, &r, &h), f0 = ref_intersect(&b.sc, &r, &h0);
 		CHECK(f == f0 && h.t == h0.t);
-		struct vec3 tr = bvh_transmittance(bvh, &b.sc, &r, INFINITY), tr0 = ref_transmittance(&b.sc, &r, INFINITY);
+		struct vec3 tr = bvh_transmittance(bvh, &b.sc.geo, &r, INFINITY), tr0 = ref_transmittance(&b.sc, &r, INFINITY);
 		CHECK(tr.x == tr0.x && tr.y == tr0.y);
 		r.o = v3(x * 2, 0, 0);
 		r.d = v3(-1, 0, 0);
 		h = h0 = (struct hit){ .t = INFINITY };
-		f = bvh_intersect(bvh, &b.sc, &r, &h);
+		f = bvh_intersect(bvh, &b.sc.geo, &r, &h);
 		f0 = ref_intersect(&b.sc, &r, &h0);
 		CHECK(f == f0 && h.t == h0.t);
 	}
@@ -827,7 +828,7 @@ static void test_deep(void)
 
 	/* a random scene's tree is shallow */
 	random_scene(&b, 20000, 10, v3s(0), false, 0);
-	bvh = bvh_build(&b.sc, ACCEL_BVH);
+	bvh = bvh_build(&b.sc.geo, false);
 	shape_of(bvh, &nodes, &depth);
 	if (depth > 48)
 		fprintf(stderr, "20000 random primitives: depth %d\n", depth);
@@ -856,7 +857,7 @@ static void test_reorder(void)
 		add_triangle(&b, vadd(pair[i], v3(-0.02, -0.02, 0)), vadd(pair[i], v3(0.02, -0.02, 0)),
 		             vadd(pair[i], v3(0, 0.02, 0)));
 	}
-	struct bvh *bvh = bvh_build(&b.sc, ACCEL_BVH);
+	struct bvh *bvh = bvh_build(&b.sc.geo, false);
 	enum { NRAYS = 3000 };
 	static struct ray rays[NRAYS];
 	static struct answer before[NRAYS];
@@ -866,11 +867,11 @@ static void test_reorder(void)
 		rays[i].d = i % 3 ? rand_unit() : vunit(vsub(pair[i % NPAIRS], rays[i].o));
 		answer_of(bvh, &b.sc, &rays[i], 3, &before[i]);
 	}
-	bvh_reorder(bvh, &b.sc);
-	CHECK(b.sc.nspheres > 20 && b.sc.ntriangles > 1000);
+	bvh_reorder(bvh, &b.sc.geo);
+	CHECK(b.sc.geo.nspheres > 20 && b.sc.geo.ntriangles > 1000);
 	/* the leaves of two triangles or more in packets, at most one for two triangles */
 	struct bvh_shape shape = bvh_shape(bvh);
-	CHECK(shape.packets > b.sc.ntriangles / 8 && shape.packets <= b.sc.ntriangles / 2);
+	CHECK(shape.packets > b.sc.geo.ntriangles / 8 && shape.packets <= b.sc.geo.ntriangles / 2);
 	long hits = 0, differ = 0;
 	for (int i = 0; i < NRAYS; i++) {
 		struct answer after;

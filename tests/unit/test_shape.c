@@ -1,10 +1,10 @@
-/* test_shape.c: the ray/primitive tests of render/shape.c at the edges of precision
+/* test_shape.c: the ray/primitive tests of render/shape/ at the edges of precision
  * (NUMERICS.md sections 2, 4, 5, 7):
  *  - watertightness: rays aimed exactly at the shared edges and vertices of a 64 x 64
  *    grid and of triangle fans hit at least one of the triangles that share them;
  *  - spheres: a 0.01 sphere at distance 1e6 and a 5e-6 sphere show their exact disc; a
  *    ground sphere of radius 1e12 is hit by grazing rays from 1 unit above, at the right t;
- *  - self-intersection: rays spawned with offset_origin (reflected, refracted, towards a
+ *  - self-intersection: rays spawned with ray_offset_origin (reflected, refracted, towards a
  *    light) never re-hit the surface they leave on the same side;
  *  - planes: a parallel ray is a miss, never a NaN;
  *  - triangle packets (render/tri_packet.c): on the rays at the grids' shared edges and
@@ -18,7 +18,6 @@
 
 #include "bvh.h"
 #include "check.h"
-#include "scene.h"
 #include "shape.h"
 #include "tri_packet.h"
 #include "xalloc.h"
@@ -56,7 +55,7 @@ static struct vec3 rot_apply(const struct rot *m, struct vec3 p)
 /* ---- a scene holding only what the tests put in it ---- */
 
 struct mini {
-	struct scene sc;
+	struct geometry geo;
 	size_t cap_v, cap_t;
 };
 
@@ -67,29 +66,30 @@ static void mini_init(struct mini *m)
 
 static uint32_t add_vertex(struct mini *m, struct vec3 v)
 {
-	xgrow((void **)&m->sc.vertices, &m->cap_v, m->sc.nvertices + 1, sizeof *m->sc.vertices);
-	m->sc.vertices[m->sc.nvertices] = v;
-	return (uint32_t)m->sc.nvertices++;
+	xgrow((void **)&m->geo.vertices, &m->cap_v, m->geo.nvertices + 1, sizeof *m->geo.vertices);
+	m->geo.vertices[m->geo.nvertices] = v;
+	return (uint32_t)m->geo.nvertices++;
 }
 
 static uint32_t add_tri(struct mini *m, uint32_t i, uint32_t j, uint32_t k)
 {
-	xgrow((void **)&m->sc.triangles, &m->cap_t, m->sc.ntriangles + 1, sizeof *m->sc.triangles);
-	m->sc.triangles[m->sc.ntriangles] = (struct triangle){ { i, j, k }, { NO_NORMALS, NO_NORMALS, NO_NORMALS }, 0 };
-	return (uint32_t)m->sc.ntriangles++;
+	xgrow((void **)&m->geo.triangles, &m->cap_t, m->geo.ntriangles + 1, sizeof *m->geo.triangles);
+	m->geo.triangles[m->geo.ntriangles] =
+		(struct triangle){ { i, j, k }, { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT }, 0 };
+	return (uint32_t)m->geo.ntriangles++;
 }
 
-static struct vec3 tri_normal(const struct scene *sc, uint32_t t)
+static struct vec3 tri_normal(const struct geometry *geo, uint32_t t)
 {
-	const struct triangle *tr = &sc->triangles[t];
-	struct vec3 a = sc->vertices[tr->v[0]], b = sc->vertices[tr->v[1]], c = sc->vertices[tr->v[2]];
+	const struct triangle *tr = &geo->triangles[t];
+	struct vec3 a = geo->vertices[tr->v[0]], b = geo->vertices[tr->v[1]], c = geo->vertices[tr->v[2]];
 	return vnorm(vcross(vsub(b, a), vsub(c, a)));
 }
 
-static bool hits_tri(const struct scene *sc, uint32_t t, const struct ray *r)
+static bool hits_tri(const struct geometry *geo, uint32_t t, const struct ray *r)
 {
 	struct hit h = { .t = INFINITY };
-	return ray_triangle(sc, t, r, &h);
+	return triangle_intersect_ray(&geo->triangles[t], geo->vertices, r, &h);
 }
 
 /* ---- watertightness ---- */
@@ -100,19 +100,19 @@ struct water {
 
 /* A ray from o aimed exactly at x must hit at least one of the triangles tris[0, n)
  * that share x (all facing the ray the same way, so their projections do not fold). */
-static void aim(const struct scene *sc, const struct bvh *bvh, struct vec3 o, struct vec3 x, const uint32_t *tris,
+static void aim(const struct geometry *geo, const struct bvh *bvh, struct vec3 o, struct vec3 x, const uint32_t *tris,
                 int n, struct water *w, const char *what)
 {
 	struct ray r = { o, vnorm(vsub(x, o)) };
-	double s0 = vdot(r.d, tri_normal(sc, tris[0]));
+	double s0 = vdot(r.d, tri_normal(geo, tris[0]));
 	for (int i = 1; i < n; i++)
-		if (!(s0 * vdot(r.d, tri_normal(sc, tris[i])) > 0)) {
+		if (!(s0 * vdot(r.d, tri_normal(geo, tris[i])) > 0)) {
 			w->folded++;
 			return;
 		}
 	int hits = 0;
 	for (int i = 0; i < n; i++)
-		hits += hits_tri(sc, tris[i], &r);
+		hits += hits_tri(geo, tris[i], &r);
 	w->rays++;
 	if (hits == 0 && w->misses++ < 5)
 		fprintf(stderr, "%s: ray o = <%a, %a, %a> d = <%a, %a, %a> passes between %d triangles\n", what, r.o.x,
@@ -120,7 +120,7 @@ static void aim(const struct scene *sc, const struct bvh *bvh, struct vec3 o, st
 	w->doubles += hits > 1;
 	if (bvh) {
 		struct hit h = { .t = INFINITY };
-		if (!bvh_intersect(bvh, sc, &r, &h) && w->mesh_misses++ < 5)
+		if (!bvh_intersect(bvh, geo, &r, &h) && w->mesh_misses++ < 5)
 			fprintf(stderr, "%s: ray o = <%a, %a, %a> d = <%a, %a, %a> misses the whole mesh\n", what, r.o.x,
 			        r.o.y, r.o.z, r.d.x, r.d.y, r.d.z);
 	}
@@ -167,12 +167,12 @@ static uint32_t quad_hi(int i, int j) { return (uint32_t)(2 * (j * GRID + i) + 1
 /* A material that lets part of the light through, for the shadow filters compared. */
 static void give_transmit(struct mini *m)
 {
-	m->sc.materials = xcalloc(1, sizeof *m->sc.materials);
-	m->sc.materials[0].transmit = v3(0.5, 0.25, 0.75);
-	m->sc.nmaterials = 1;
-	m->sc.surfaces = xcalloc(1, sizeof *m->sc.surfaces);
-	m->sc.surfaces[0] = (struct surface){ 0, -1 };
-	m->sc.nsurfaces = 1;
+	m->geo.transmit = xcalloc(1, sizeof *m->geo.transmit);
+	m->geo.transmit[0] = v3(0.5, 0.25, 0.75);
+	m->geo.ntransmit = 1;
+	m->geo.surfaces = xcalloc(1, sizeof *m->geo.surfaces);
+	m->geo.surfaces[0] = (struct surface){ 0, -1 };
+	m->geo.nsurfaces = 1;
 }
 
 struct packet_tally {
@@ -180,25 +180,25 @@ struct packet_tally {
 };
 
 /* The packet of triangles [first, first + n) against the scalar test of each in turn
- * (prim_intersect and prim_filter, as a leaf of the BVH does without packets): from h->t
+ * (shape_intersect and shape_filter, as a leaf of the BVH does without packets): from h->t
  * = tmax, the same hit or none, the same t, b1, b2 and triangle; the same light through
  * (0, tmax). */
-static void packet_agrees(const struct scene *sc, uint32_t first, uint32_t n, const struct ray *r, double tmax,
+static void packet_agrees(const struct geometry *geo, uint32_t first, uint32_t n, const struct ray *r, double tmax,
                           struct packet_tally *pt)
 {
 	struct tri_packet pk;
-	tri_packet_fill(&pk, sc, first, n);
-	struct tri_ray tr;
-	tri_ray_init(r, &tr);
+	tri_packet_fill(&pk, geo, first, n);
+	struct triangle_ray tr;
+	triangle_ray_init(r, &tr);
 	struct hit a = { .t = tmax, .prim = UINT32_MAX }, b = a;
 	bool fa = false;
 	for (uint32_t i = 0; i < n; i++)
-		fa |= prim_intersect(sc, prim_id(PRIM_TRIANGLE, first + i), r, &tr, &a);
-	bool fb = tri_packet_intersect(&pk, sc, &tr, &b);
+		fa |= shape_intersect(geo, shape_id(SHAPE_TRIANGLE, first + i), r, &tr, &a);
+	bool fb = tri_packet_intersect(&pk, geo, &tr, &b);
 	struct vec3 pa = v3s(1);
 	for (uint32_t i = 0; i < n && !vzero(pa); i++)
-		pa = prim_filter(sc, prim_id(PRIM_TRIANGLE, first + i), r, &tr, tmax, pa);
-	struct vec3 pb = tri_packet_filter(&pk, sc, &tr, tmax, v3s(1));
+		pa = shape_filter(geo, shape_id(SHAPE_TRIANGLE, first + i), r, &tr, tmax, pa);
+	struct vec3 pb = tri_packet_filter(&pk, geo, &tr, tmax, v3s(1));
 	pt->rays++;
 	pt->hits += fa;
 	bool same = fa == fb && a.t == b.t && a.prim == b.prim && (!fa || (a.b1 == b.b1 && a.b2 == b.b2)) &&
@@ -222,19 +222,19 @@ static void test_packet_edge(void)
 	give_transmit(&m);
 	struct ray r = { v3(0, 0, 0), v3(0, 0, 1) };
 	struct packet_tally pt = { 0 };
-	packet_agrees(&m.sc, 0, 1, &r, INFINITY, &pt);
+	packet_agrees(&m.geo, 0, 1, &r, INFINITY, &pt);
 	CHECK(pt.bad == 0);
 	if (LDBL_MANT_DIG > DBL_MANT_DIG)
-		CHECK(!hits_tri(&m.sc, 0, &r));
-	scene_free(&m.sc);
+		CHECK(!hits_tri(&m.geo, 0, &r));
+	geometry_free(&m.geo);
 }
 
 /* Rays at the shared edges and vertices of the grid, from origins above it. */
 static void grid_rays(const struct mini *m, const struct rot *rot, double cell, bool axis_rays, const char *what,
                       struct packet_tally *pt)
 {
-	const struct scene *sc = &m->sc;
-	struct bvh *bvh = bvh_build(sc, ACCEL_BVH);
+	const struct geometry *geo = &m->geo;
+	struct bvh *bvh = bvh_build(geo, false);
 	struct water w = { 0 };
 	struct vec3 up = rot ? rot->b : v3(0, 1, 0);
 	for (int j = 1; j < GRID; j++)
@@ -242,7 +242,7 @@ static void grid_rays(const struct mini *m, const struct rot *rot, double cell, 
 			for (int k = 0; k < 4; k++) {
 				/* the origin: above the grid, at most 5 cells aside, 10 to 100 cells up;
 				 * for axis_rays straight above the point aimed at */
-				struct vec3 at = sc->vertices[vid(i, j)];
+				struct vec3 at = geo->vertices[vid(i, j)];
 				struct vec3 o = axis_rays ? vadd(at, v3(0, 50 * cell, 0))
 				                          : vadd(vadd(at, vscale(up, lrand(10, 100) * cell)),
 				                                 vscale(perp_unit(up), urange(0, 5) * cell));
@@ -251,7 +251,7 @@ static void grid_rays(const struct mini *m, const struct rot *rot, double cell, 
 				                    quad_lo(i - 1, j - 1), quad_hi(i, j - 1) };
 				/* (i, j) is v00 of lo(i,j) and hi(i,j), v10 of lo(i-1,j), v11 of lo(i-1,j-1)
 				 * and hi(i-1,j-1), v01 of hi(i,j-1) */
-				aim(sc, bvh, o, at, fan, 6, &w, what);
+				aim(geo, bvh, o, at, fan, 6, &w, what);
 				/* the eight triangles of the four quads around (i, j), as two packets of
 				 * four, and as packets of three, two and one; to infinity and to a tmax
 				 * just past (i, j), where each hit ties with the others */
@@ -260,16 +260,16 @@ static void grid_rays(const struct mini *m, const struct rot *rot, double cell, 
 				for (int row = 0; row < 2; row++) {
 					uint32_t first = quad_lo(i - 1, j - row);
 					for (uint32_t n = 1; n <= PACKET_LANES; n++) {
-						packet_agrees(sc, first + PACKET_LANES - n, n, &r, INFINITY, pt);
-						packet_agrees(sc, first, n, &r, t_at * (1 + 0x1p-40), pt);
+						packet_agrees(geo, first + PACKET_LANES - n, n, &r, INFINITY, pt);
+						packet_agrees(geo, first, n, &r, t_at * (1 + 0x1p-40), pt);
 					}
 				}
 				/* points on the three edges that leave (i, j) towards +x, +z and the diagonal */
 				double s = k == 0 ? 0.5 : urand();
 				if (axis_rays)
 					s = (1 + irand(63)) / 64.0;
-				struct vec3 px = sc->vertices[vid(i + 1, j)], pz = sc->vertices[vid(i, j + 1)],
-				            pd = sc->vertices[vid(i + 1, j + 1)];
+				struct vec3 px = geo->vertices[vid(i + 1, j)], pz = geo->vertices[vid(i, j + 1)],
+				            pd = geo->vertices[vid(i + 1, j + 1)];
 				struct vec3 ex = vadd(at, vscale(vsub(px, at), s));
 				struct vec3 ez = vadd(at, vscale(vsub(pz, at), s));
 				struct vec3 ed = vadd(at, vscale(vsub(pd, at), s));
@@ -282,9 +282,9 @@ static void grid_rays(const struct mini *m, const struct rot *rot, double cell, 
 					oo[1] = vadd(ez, v3(0, 50 * cell, 0));
 					oo[2] = vadd(ed, v3(0, 50 * cell, 0));
 				}
-				aim(sc, bvh, oo[0], ex, sx, 2, &w, what);
-				aim(sc, bvh, oo[1], ez, sz, 2, &w, what);
-				aim(sc, bvh, oo[2], ed, sd, 2, &w, what);
+				aim(geo, bvh, oo[0], ex, sx, 2, &w, what);
+				aim(geo, bvh, oo[1], ez, sz, 2, &w, what);
+				aim(geo, bvh, oo[2], ed, sd, 2, &w, what);
 				if (axis_rays)
 					break;
 			}
@@ -303,7 +303,7 @@ static void test_grid(void)
 	give_transmit(&m);
 	grid_rays(&m, NULL, 1, true, "flat grid, vertical rays", &pt);
 	grid_rays(&m, NULL, 1, false, "flat grid, oblique rays", &pt);
-	scene_free(&m.sc);
+	geometry_free(&m.geo);
 	/* a bumpy grid in a random frame, near the origin and far from it */
 	static const double offsets[] = { 0, 1e3, 1e6 };
 	static const double cells[] = { 1, 1e-3, 10 };
@@ -315,7 +315,7 @@ static void test_grid(void)
 		give_transmit(&m);
 		snprintf(what, sizeof what, "bumpy grid at %g, cell %g", offsets[k], cells[k]);
 		grid_rays(&m, &rot, cells[k], false, what, &pt);
-		scene_free(&m.sc);
+		geometry_free(&m.geo);
 	}
 	if (pt.bad || getenv("TEST_SHAPE_VERBOSE"))
 		fprintf(stderr, "triangle packets: %ld rays, %ld hits, %ld differ from the scalar test\n", pt.rays,
@@ -345,22 +345,22 @@ static void test_fans(void)
 		uint32_t tris[64];
 		for (int i = 0; i < n; i++)
 			tris[i] = add_tri(&m, c, (uint32_t)(1 + (i + 1) % n), (uint32_t)(1 + i));
-		struct bvh *bvh = bvh_build(&m.sc, ACCEL_BVH);
-		struct vec3 centre = m.sc.vertices[c];
+		struct bvh *bvh = bvh_build(&m.geo, false);
+		struct vec3 centre = m.geo.vertices[c];
 		for (int k = 0; k < 40; k++) {
 			/* from above or below, within 30 degrees of the axis */
 			struct vec3 dir = vadd(vscale(up, irand(2) ? 1 : -1), vscale(perp_unit(up), urange(0, 0.5)));
 			struct vec3 o = vadd(centre, vscale(vnorm(dir), radius * lrand(2, 1e3)));
-			aim(&m.sc, bvh, o, centre, tris, n, &w, "fan centre");
+			aim(&m.geo, bvh, o, centre, tris, n, &w, "fan centre");
 			/* a point on spoke i, shared by triangles i-1 and i */
 			int i = irand(n);
-			struct vec3 rim = m.sc.vertices[1 + i];
+			struct vec3 rim = m.geo.vertices[1 + i];
 			struct vec3 x = vadd(centre, vscale(vsub(rim, centre), k == 0 ? 0.5 : urange(0, 1)));
 			uint32_t pair[2] = { tris[(i + n - 1) % n], tris[i] };
-			aim(&m.sc, bvh, o, x, pair, 2, &w, "fan spoke");
+			aim(&m.geo, bvh, o, x, pair, 2, &w, "fan spoke");
 		}
 		bvh_free(bvh);
-		scene_free(&m.sc);
+		geometry_free(&m.geo);
 	}
 	report(&w, "fans");
 }
@@ -370,7 +370,7 @@ static void test_fans(void)
 static bool sphere_t(const struct sphere *s, const struct ray *r, double *t)
 {
 	struct hit h = { .t = INFINITY };
-	bool hit = ray_sphere(s, r, &h);
+	bool hit = sphere_intersect(s, r, &h);
 	*t = h.t;
 	return hit;
 }
@@ -450,12 +450,12 @@ static void test_small_far_spheres(void)
 		CHECK(sphere_t(&s, &r, &t));
 		CHECK_NEAR(t, 5e-6, 1e-18);
 		/* the hit point is on the sphere */
-		struct scene sc = { 0 };
-		sc.spheres = &s;
-		sc.nspheres = 1;
-		struct hit h = { .t = t, .prim = prim_id(PRIM_SPHERE, 0) };
+		struct geometry geo = { 0 };
+		geo.spheres = &s;
+		geo.nspheres = 1;
+		struct hit h = { .t = t, .prim = shape_id(SHAPE_SPHERE, 0) };
 		struct surface_point sp;
-		surface_at(&sc, &r, &h, &sp);
+		shape_surface_at(&geo, &r, &h, &sp);
 		CHECK_NEAR(vlen(vsub(sp.p, s.center)), 5e-6, 1e-15 + 4 * sp.p_err.x);
 	}
 }
@@ -465,9 +465,9 @@ static void test_ground_sphere(void)
 {
 	const double R = 1e12;
 	struct sphere s = { v3(0, -R, 0), R, 0 };
-	struct scene sc = { 0 };
-	sc.spheres = &s;
-	sc.nspheres = 1;
+	struct geometry geo = { 0 };
+	geo.spheres = &s;
+	geo.nspheres = 1;
 	/* slopes from steep to just over the horizon's, about sqrt(2 / R) = 1.414e-6 */
 	static const double slopes[] = { 1, 0.1, 1e-2, 1e-3, 1e-4, 1e-5, 3e-6, 1.5e-6 };
 	for (size_t k = 0; k < sizeof slopes / sizeof slopes[0]; k++) {
@@ -494,12 +494,12 @@ static void test_ground_sphere(void)
 		CHECK(dy <= 8 * 0x1p-13); /* ulp(1e12) = 2^-13 */
 
 		/* the hit point and what leaves it */
-		struct hit h = { .t = t, .prim = prim_id(PRIM_SPHERE, 0) };
+		struct hit h = { .t = t, .prim = shape_id(SHAPE_SPHERE, 0) };
 		struct surface_point sp;
-		surface_at(&sc, &r, &h, &sp);
+		shape_surface_at(&geo, &r, &h, &sp);
 		CHECK(sp.ng.y > 0.99);
 		struct vec3 mirror = vsub(r.d, vscale(sp.ng, 2 * vdot(r.d, sp.ng)));
-		struct ray rr = { offset_origin(&sp, mirror), vnorm(mirror) };
+		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		double t2;
 		bool again = sphere_t(&s, &rr, &t2);
 		if (again)
@@ -507,9 +507,9 @@ static void test_ground_sphere(void)
 		CHECK(!again);
 		/* towards a light high up */
 		struct vec3 l = vnorm(v3(0.3, 1, 0.2));
-		struct ray sr = { offset_origin(&sp, l), l };
+		struct ray sr = { ray_offset_origin(&sp, l), l };
 		double ts[2];
-		CHECK(ray_sphere_crossings(&s, &sr, INFINITY, ts) == 0);
+		CHECK(sphere_crossings(&s, &sr, INFINITY, ts) == 0);
 	}
 	/* above the horizon: a miss */
 	struct ray up = { v3(0, 1, 0), vnorm(v3(1, 1e-6, 0)) };
@@ -570,23 +570,23 @@ static void test_self_spheres(void)
 		if (radius < 1e-6 * off)
 			radius = 1e-6 * off;
 		struct sphere s = { vscale(rand_unit(), off), radius, 0 };
-		struct scene sc = { 0 };
-		sc.spheres = &s;
-		sc.nspheres = 1;
+		struct geometry geo = { 0 };
+		geo.spheres = &s;
+		geo.nspheres = 1;
 		struct ray r;
 		r.o = vadd(s.center, vscale(rand_unit(), radius * lrand(1.01, 1e3)));
 		r.d = aim_at_sphere(&s, r.o);
 		struct hit h = { .t = INFINITY };
-		if (!ray_sphere(&s, &r, &h))
+		if (!sphere_intersect(&s, &r, &h))
 			continue; /* a grazing aim can miss */
-		h.prim = prim_id(PRIM_SPHERE, 0);
+		h.prim = shape_id(SHAPE_SPHERE, 0);
 		struct surface_point sp;
-		surface_at(&sc, &r, &h, &sp);
+		shape_surface_at(&geo, &r, &h, &sp);
 		double t;
 
 		/* reflected, outside: a convex surface is not hit again */
 		struct vec3 m = reflect(r.d, sp.ng);
-		struct ray rr = { offset_origin(&sp, m), vnorm(m) };
+		struct ray rr = { ray_offset_origin(&sp, m), vnorm(m) };
 		st.tests++;
 		if (sphere_t(&s, &rr, &t))
 			self_fail(&st, "sphere, reflected outside", &rr, t);
@@ -596,7 +596,7 @@ static void test_self_spheres(void)
 		double ior = irand(2) ? 1.5 : lrand(1.0001, 3);
 		if (!refract(r.d, sp.ng, ior, &w))
 			continue;
-		struct ray rt = { offset_origin(&sp, w), w };
+		struct ray rt = { ray_offset_origin(&sp, w), w };
 		double chord = -2 * radius * vdot(w, sp.ng);
 		st.tests++;
 		if (!sphere_t(&s, &rt, &t) || fabs(t - chord) > 1e-6 * chord + 8 * vlen(sp.p_err)) {
@@ -609,9 +609,9 @@ static void test_self_spheres(void)
 		 * again further on; refracted out (if it can) never comes back */
 		struct hit h2 = { .t = t, .prim = h.prim };
 		struct surface_point sp2;
-		surface_at(&sc, &rt, &h2, &sp2);
+		shape_surface_at(&geo, &rt, &h2, &sp2);
 		struct vec3 m2 = reflect(rt.d, sp2.ng);
-		struct ray rr2 = { offset_origin(&sp2, m2), vnorm(m2) };
+		struct ray rr2 = { ray_offset_origin(&sp2, m2), vnorm(m2) };
 		double chord2 = 2 * radius * vdot(rr2.d, sp2.ng) * -1;
 		st.tests++;
 		if (!sphere_t(&s, &rr2, &t) || !(t > 0.5 * chord2)) {
@@ -621,7 +621,7 @@ static void test_self_spheres(void)
 		}
 		struct vec3 w2;
 		if (refract(rt.d, sp2.ng, 1 / ior, &w2)) {
-			struct ray out = { offset_origin(&sp2, w2), w2 };
+			struct ray out = { ray_offset_origin(&sp2, w2), w2 };
 			st.tests++;
 			if (sphere_t(&s, &out, &t))
 				self_fail(&st, "sphere, refracted out", &out, t);
@@ -648,10 +648,10 @@ static void test_self_triangles(void)
 		uint32_t b = add_vertex(&m, vadd(c, vscale(rand_unit(), size)));
 		uint32_t d = add_vertex(&m, vadd(c, vscale(rand_unit(), size)));
 		add_tri(&m, a, b, d);
-		struct vec3 pa = m.sc.vertices[a], pb = m.sc.vertices[b], pd = m.sc.vertices[d];
+		struct vec3 pa = m.geo.vertices[a], pb = m.geo.vertices[b], pd = m.geo.vertices[d];
 		struct vec3 nrm = vcross(vsub(pb, pa), vsub(pd, pa));
 		if (vlen(nrm) < 1e-3 * size * size) {
-			scene_free(&m.sc);
+			geometry_free(&m.geo);
 			continue;
 		}
 		/* aim at an interior point from either side, sometimes grazing */
@@ -665,13 +665,13 @@ static void test_self_triangles(void)
 		struct ray r = { vadd(x, vscale(dir, size * lrand(0.1, 1e3))), v3s(0) };
 		r.d = vnorm(vsub(x, r.o));
 		struct hit h = { .t = INFINITY };
-		if (!ray_triangle(&m.sc, 0, &r, &h)) {
-			scene_free(&m.sc);
+		if (!triangle_intersect_ray(&m.geo.triangles[0], m.geo.vertices, &r, &h)) {
+			geometry_free(&m.geo);
 			continue;
 		}
-		h.prim = prim_id(PRIM_TRIANGLE, 0);
+		h.prim = shape_id(SHAPE_TRIANGLE, 0);
 		struct surface_point sp;
-		surface_at(&m.sc, &r, &h, &sp);
+		shape_surface_at(&m.geo, &r, &h, &sp);
 		struct vec3 outs[3];
 		int nout = 0;
 		outs[nout++] = reflect(r.d, sp.ng);
@@ -680,13 +680,13 @@ static void test_self_triangles(void)
 		if (refract(r.d, sp.ng, irand(2) ? 1.5 : 1 / 1.5, &w))
 			outs[nout++] = w;
 		for (int i = 0; i < nout; i++) {
-			struct ray s2 = { offset_origin(&sp, outs[i]), vnorm(outs[i]) };
+			struct ray s2 = { ray_offset_origin(&sp, outs[i]), vnorm(outs[i]) };
 			struct hit h2 = { .t = INFINITY };
 			st.tests++;
-			if (ray_triangle(&m.sc, 0, &s2, &h2))
+			if (triangle_intersect_ray(&m.geo.triangles[0], m.geo.vertices, &s2, &h2))
 				self_fail(&st, i == 0 ? "triangle, reflected" : "triangle, transmitted", &s2, h2.t);
 		}
-		scene_free(&m.sc);
+		geometry_free(&m.geo);
 	}
 	if (st.bad || getenv("TEST_SHAPE_VERBOSE"))
 		fprintf(stderr, "triangles: %ld spawned rays, %ld re-hit\n", st.tests, st.bad);
@@ -701,9 +701,9 @@ static void test_self_planes(void)
 		struct plane pl = { k % 5 == 0 ? v3(0, 1, 0) : rand_unit(), irand(3) ? lrand(1e-3, 1e9) : 0, 0 };
 		if (irand(2))
 			pl.offset = -pl.offset;
-		struct scene sc = { 0 };
-		sc.planes = &pl;
-		sc.nplanes = 1;
+		struct geometry geo = { 0 };
+		geo.planes = &pl;
+		geo.nplanes = 1;
 		struct vec3 base = vscale(pl.normal, pl.offset);
 		struct vec3 x = vadd(base, vscale(perp_unit(pl.normal), lrand(1e-3, fmax(1, fabs(pl.offset)))));
 		struct vec3 dir = rand_unit();
@@ -712,17 +712,17 @@ static void test_self_planes(void)
 		struct ray r = { vadd(x, vscale(dir, lrand(1e-2, 1e4))), v3s(0) };
 		r.d = vnorm(vsub(x, r.o));
 		struct hit h = { .t = INFINITY };
-		if (!ray_plane(&pl, &r, &h))
+		if (!plane_intersect(&pl, &r, &h))
 			continue;
-		h.prim = prim_id(PRIM_PLANE, 0);
+		h.prim = shape_id(SHAPE_PLANE, 0);
 		struct surface_point sp;
-		surface_at(&sc, &r, &h, &sp);
+		shape_surface_at(&geo, &r, &h, &sp);
 		struct vec3 outs[2] = { reflect(r.d, sp.ng), r.d };
 		for (int i = 0; i < 2; i++) {
-			struct ray s2 = { offset_origin(&sp, outs[i]), vnorm(outs[i]) };
+			struct ray s2 = { ray_offset_origin(&sp, outs[i]), vnorm(outs[i]) };
 			struct hit h2 = { .t = INFINITY };
 			st.tests++;
-			if (ray_plane(&pl, &s2, &h2))
+			if (plane_intersect(&pl, &s2, &h2))
 				self_fail(&st, i == 0 ? "plane, reflected" : "plane, transmitted", &s2, h2.t);
 		}
 	}
@@ -741,52 +741,52 @@ static void test_plane_parallel(void)
 	/* parallel, off the plane and in it, with +0 and -0 */
 	bool hit;
 	struct ray r = { v3(0, 0, 0), v3(1, 0, 0) };
-	CHECK(!ray_plane(&pl, &r, &h));
+	CHECK(!plane_intersect(&pl, &r, &h));
 	r.d = v3(0, -0.0, 1);
-	CHECK(!ray_plane(&pl, &r, &h));
+	CHECK(!plane_intersect(&pl, &r, &h));
 	r.o = v3(5, 2, 5);
-	CHECK(!ray_plane(&pl, &r, &h));
+	CHECK(!plane_intersect(&pl, &r, &h));
 	CHECK(h.t == INFINITY && h.prim == 7);
 	/* a slanted normal with d . n exactly 0 (the products are exact, so even a build
 	 * that contracts them into fused multiply-adds sees 0) */
 	double a = 1 / sqrt(2.0);
 	struct plane sl = { v3(a, a, 0), 1, 0 };
 	r = (struct ray){ v3(1, 2, 3), v3(0, -0.0, 1) };
-	CHECK(!ray_plane(&sl, &r, &h));
+	CHECK(!plane_intersect(&sl, &r, &h));
 	CHECK(h.t == INFINITY);
 	r.d = v3(a, -a, 0); /* 0 in plain IEEE arithmetic */
-	hit = ray_plane(&sl, &r, &h);
+	hit = plane_intersect(&sl, &r, &h);
 	CHECK(!isnan(h.t));
 	if (vdot(sl.normal, r.d) == 0)
 		CHECK(!hit && h.t == INFINITY);
 	/* nearly parallel: a finite t or a miss, never NaN */
 	r = (struct ray){ v3(0, 0, 0), vnorm(v3(1, 1e-300, 0)) };
 	h.t = INFINITY;
-	hit = ray_plane(&pl, &r, &h);
+	hit = plane_intersect(&pl, &r, &h);
 	CHECK(!isnan(h.t));
 	CHECK(!hit || (h.t > 0 && isfinite(h.t)));
 	/* the same through the BVH's plane loop and the shadow filter */
-	struct material mat = { .transmit = v3s(0) };
+	struct vec3 opaque = v3s(0);
 	struct surface srf = { 0, -1 };
-	struct scene sc = { 0 };
-	sc.planes = &pl;
-	sc.nplanes = 1;
-	sc.materials = &mat;
-	sc.nmaterials = 1;
-	sc.surfaces = &srf;
-	sc.nsurfaces = 1;
-	struct bvh *bvh = bvh_build(&sc, ACCEL_BVH);
+	struct geometry geo = { 0 };
+	geo.planes = &pl;
+	geo.nplanes = 1;
+	geo.transmit = &opaque;
+	geo.ntransmit = 1;
+	geo.surfaces = &srf;
+	geo.nsurfaces = 1;
+	struct bvh *bvh = bvh_build(&geo, false);
 	r = (struct ray){ v3(0, 0, 0), v3(0, 0, -1) };
 	h = (struct hit){ .t = INFINITY };
-	CHECK(!bvh_intersect(bvh, &sc, &r, &h));
+	CHECK(!bvh_intersect(bvh, &geo, &r, &h));
 	CHECK(h.t == INFINITY);
-	struct vec3 tr = bvh_transmittance(bvh, &sc, &r, INFINITY);
+	struct vec3 tr = bvh_transmittance(bvh, &geo, &r, INFINITY);
 	CHECK(tr.x == 1 && tr.y == 1 && tr.z == 1);
 	/* and a ray that does cross it is blocked */
 	r.d = v3(0, 1, 0);
-	tr = bvh_transmittance(bvh, &sc, &r, INFINITY);
+	tr = bvh_transmittance(bvh, &geo, &r, INFINITY);
 	CHECK(vzero(tr));
-	tr = bvh_transmittance(bvh, &sc, &r, 1.5); /* a segment that stops short */
+	tr = bvh_transmittance(bvh, &geo, &r, 1.5); /* a segment that stops short */
 	CHECK(tr.x == 1);
 	bvh_free(bvh);
 
@@ -796,9 +796,9 @@ static void test_plane_parallel(void)
 	add_tri(&m, add_vertex(&m, v3(0, 0, 0)), add_vertex(&m, v3(1, 0, 0)), add_vertex(&m, v3(0, 0, 1)));
 	r = (struct ray){ v3(-1, 0, 0.25), v3(1, 0, 0) };
 	h = (struct hit){ .t = INFINITY };
-	CHECK(!ray_triangle(&m.sc, 0, &r, &h));
+	CHECK(!triangle_intersect_ray(&m.geo.triangles[0], m.geo.vertices, &r, &h));
 	CHECK(h.t == INFINITY);
-	scene_free(&m.sc);
+	geometry_free(&m.geo);
 }
 
 int main(void)

@@ -1,0 +1,17 @@
+/* geometry.c: release of a scene's primitives (geometry.h). */
+#include "geometry.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void geometry_free(struct geometry *g)
+{
+	free(g->spheres);
+	free(g->planes);
+	free(g->vertices);
+	free(g->normals);
+	free(g->triangles);
+	free(g->surfaces);
+	free(g->transmit);
+	memset(g, 0, sizeof *g);
+}

@@ -1,0 +1,44 @@
+/* geometry.h: a scene's primitives, in flat arrays by kind, with what each is made of.
+ * lower.c fills it; the accelerators and the shapes' dispatch (shape.h) read it, and
+ * need nothing else of the scene. */
+#ifndef SCN_GEOMETRY_H
+#define SCN_GEOMETRY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "plane.h"
+#include "sphere.h"
+#include "triangle.h"
+
+/* What a primitive is made of: a material, and for a checker the map from world space
+ * back to the object's own space, where the checker is defined. */
+struct surface {
+	uint32_t material;             /* into scene.materials */
+	int32_t to_object;             /* into scene.affines; -1: the identity */
+};
+
+struct geometry {
+	struct sphere *spheres;
+	size_t nspheres;
+	struct plane *planes;
+	size_t nplanes;
+	struct vec3 *vertices;
+	size_t nvertices;
+	struct vec3 *normals;
+	size_t nnormals;
+	struct triangle *triangles;
+	size_t ntriangles;
+	struct surface *surfaces;
+	size_t nsurfaces;
+	/* each material's k_t (scene.materials[m].transmit), for the shadow filter, which
+	 * multiplies the k_t of every surface a shadow ray crosses: a copy, so that the
+	 * accelerators that filter need no materials */
+	struct vec3 *transmit;
+	size_t ntransmit;
+};
+
+/* Frees g's arrays and empties it. */
+void geometry_free(struct geometry *g);
+
+#endif
