@@ -13,6 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "file.h"
 #include "lang.h"
 #include "suggest.h"
 #include "xalloc.h"
@@ -89,7 +90,7 @@ static const char *not_a_file(const char *path)
 
 static void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what)
 {
-	char *path = lang_resolve_path(src->dir, str->u.str.text);
+	char *path = file_resolve(src->dir, str->u.str.text);
 	const char *why = not_a_file(path);
 	FILE *f = why ? NULL : fopen(path, "rb");
 	int err = f || why ? 0 : errno;
@@ -160,7 +161,7 @@ static void check_include(struct checker *c, struct ast *inc)
 			           LANG_MAX_INCLUDES);
 		return;
 	}
-	char *path = lang_resolve_path(from->dir, name);
+	char *path = file_resolve(from->dir, name);
 	const char *why = not_a_file(path);
 	if (why) {
 		diag_error(c->diag, at, "cannot read included file '%s': %s", name, why);
@@ -178,7 +179,7 @@ static void check_include(struct checker *c, struct ast *inc)
 	char *text;
 	uint32_t len;
 	c->nincludes++;
-	int err = lang_read_file(path, &text, &len);
+	int err = file_read(path, &text, &len);
 	if (err) {
 		diag_error(c->diag, at, "cannot read included file '%s': %s", name,
 		           err == EFBIG ? "the scene's files exceed 256 MiB in all" : strerror(err));
@@ -274,7 +275,7 @@ static void check_stmts(struct checker *c, struct ast_list *stmts)
 		check_statement(c, stmts->v[i]);
 }
 
-struct checker *checker_new(struct arena *nodes, struct arena *keep, struct diag *d, const struct source *src,
+struct checker *check_new(struct arena *nodes, struct arena *keep, struct diag *d, const struct source *src,
                             struct ast_list *root)
 {
 	struct checker *c = xcalloc(1, sizeof *c);
@@ -289,12 +290,12 @@ struct checker *checker_new(struct arena *nodes, struct arena *keep, struct diag
 	return c;
 }
 
-unsigned checker_slots(const struct checker *c)
+unsigned check_slots(const struct checker *c)
 {
 	return c->nslots;
 }
 
-void checker_free(struct checker *c, bool finished)
+void check_free(struct checker *c, bool finished)
 {
 	if (finished && !diag_stopped(c->diag))
 		names_pop_scope(c);
@@ -303,63 +304,11 @@ void checker_free(struct checker *c, bool finished)
 	free(c);
 }
 
-unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts)
+unsigned check_file(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts)
 {
-	struct checker *c = checker_new(a, a, d, src, stmts);
+	struct checker *c = check_new(a, a, d, src, stmts);
 	check_stmts(c, stmts);
-	unsigned nslots = checker_slots(c);
-	checker_free(c, true);
+	unsigned nslots = check_slots(c);
+	check_free(c, true);
 	return nslots;
-}
-
-int lang_read_file(const char *path, char **text, uint32_t *len)
-{
-	FILE *f = fopen(path, "rb");
-	if (!f)
-		return errno;
-	/* a file is read into a buffer of its size at once (one byte more, to see its end):
-	 * doubling from 64 KiB would copy a 60 MB scene twice over and touch twice its pages */
-	struct stat st;
-	size_t cap = fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size < DIAG_MAX_SOURCE_BYTES
-	           ? (size_t)st.st_size + 2 : 1 << 16;
-	size_t n = 0;
-	char *buf = xmalloc(cap);
-	for (;;) {
-		if (n + 1 >= cap) {
-			if (cap >= DIAG_MAX_SOURCE_BYTES) {
-				free(buf);
-				fclose(f);
-				return EFBIG;
-			}
-			cap *= 2;
-			buf = xrealloc(buf, cap);
-		}
-		size_t got = fread(buf + n, 1, cap - n - 1, f);
-		n += got;
-		if (got == 0)
-			break;
-	}
-	int err = ferror(f) ? (errno ? errno : EIO) : 0;
-	fclose(f);
-	if (err) {
-		free(buf);
-		return err;
-	}
-	buf = xrealloc(buf, n + 1); /* many small includes must not hold 64 KiB each */
-	buf[n] = '\0';
-	*text = buf;
-	*len = (uint32_t)n;
-	return 0;
-}
-
-char *lang_resolve_path(const char *dir, const char *path)
-{
-	if (path[0] == '/' || strcmp(dir, ".") == 0)
-		return xstrdup(path);
-	size_t ld = strlen(dir), lp = strlen(path);
-	char *out = xmalloc(ld + lp + 2);
-	memcpy(out, dir, ld);
-	out[ld] = '/';
-	memcpy(out + ld + 1, path, lp + 1);
-	return out;
 }

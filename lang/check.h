@@ -34,26 +34,19 @@ struct binding {
 
 /* Checks the statements of src (already parsed into *stmts), reading and parsing the
  * files they include. Reports to d; returns the number of value slots eval.c needs. */
-unsigned lang_check(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts);
+unsigned check_file(struct arena *a, struct diag *d, const struct source *src, struct ast_list *stmts);
 
-/* The same one statement at a time, for a file checked as it is parsed. checker_new
+/* The same one statement at a time, for a file checked as it is parsed. check_new
  * opens the file's scope: bindings and the symbol table go to keep, which outlives the
  * checker, and included files are parsed into nodes (their names into keep). root is
  * the file's statements, for "defined after its use" notes, or NULL. */
-struct checker *checker_new(struct arena *nodes, struct arena *keep, struct diag *d, const struct source *src,
+struct checker *check_new(struct arena *nodes, struct arena *keep, struct diag *d, const struct source *src,
                             struct ast_list *root);
 void check_statement(struct checker *c, struct ast *stmt);
 /* The value slots eval.c needs for the statements checked so far. */
-unsigned checker_slots(const struct checker *c);
+unsigned check_slots(const struct checker *c);
 /* Frees c. finished: the file was checked to its end, so its scope is closed and what it
- * bound and never used is warned about (as lang_check does); otherwise it is abandoned. */
-void checker_free(struct checker *c, bool finished);
-
-/* Reads a whole file into a NUL-terminated malloc'd buffer. Returns 0 or an errno value
- * (EFBIG when it is larger than DIAG_MAX_SOURCE_BYTES). */
-int lang_read_file(const char *path, char **text, uint32_t *len);
-
-/* Joins path to dir unless path is absolute; malloc'd. */
-char *lang_resolve_path(const char *dir, const char *path);
+ * bound and never used is warned about (as check_file does); otherwise it is abandoned. */
+void check_free(struct checker *c, bool finished);
 
 #endif

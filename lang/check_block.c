@@ -131,7 +131,7 @@ static void check_material_ref(struct checker *c, struct ast *id)
 static void check_pattern(struct checker *c, struct ast *id)
 {
 	for (int p = 0; p < PATTERN_COUNT; p++)
-		if (strcmp(id->u.ident.name, pattern_name(p)) == 0) {
+		if (strcmp(id->u.ident.name, scene_desc_pattern_name(p)) == 0) {
 			id->u.ident.builtin = p;
 			return;
 		}
@@ -139,7 +139,7 @@ static void check_pattern(struct checker *c, struct ast *id)
 	char buf[96];
 	suggest_init(&s, id->u.ident.name);
 	for (int p = 0; p < PATTERN_COUNT; p++)
-		suggest_consider(&s, pattern_name(p));
+		suggest_consider(&s, scene_desc_pattern_name(p));
 	if (s.best)
 		diag_error(c->diag, id->span, "unknown pattern '%s'%s", id->u.ident.name, suggest_text(&s, buf, sizeof buf));
 	else

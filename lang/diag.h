@@ -98,7 +98,7 @@ void diag_plain(struct diag *d, enum diag_level level, const char *fmt, ...)
 
 static inline bool diag_stopped(const struct diag *d) { return d->stopped; }
 
-static inline struct span span_join(struct span a, struct span b)
+static inline struct span diag_span_join(struct span a, struct span b)
 {
 	return (struct span){ a.start < b.start ? a.start : b.start, a.end > b.end ? a.end : b.end };
 }

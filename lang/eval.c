@@ -10,6 +10,7 @@
 
 #include "builtins.h"
 #include "check.h"
+#include "file.h"
 #include "xalloc.h"
 
 struct evaluator {
@@ -580,7 +581,7 @@ static void eval_object(struct evaluator *ev, struct ast *s, const struct source
 		obj.kind = OBJ_MESH;
 		if (args->n) {
 			m.file = xstrdup(args->v[0]->u.str.text);
-			m.path = lang_resolve_path(src->dir, m.file);
+			m.path = file_resolve(src->dir, m.file);
 			m.file_span = args->v[0]->span;
 		} else {
 			ok = eval_mesh_lists(ev, s, &m);
@@ -655,7 +656,7 @@ static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source
 		case KW_IMAGE:
 			k->kind = SKY_IMAGE;
 			k->image = xstrdup(arg0(it)->u.str.text);
-			k->image_path = lang_resolve_path(src->dir, k->image);
+			k->image_path = file_resolve(src->dir, k->image);
 			break;
 		case KW_ROTATE: num_of(ev, arg0(it), &k->rotate); break;
 		case KW_INTENSITY: num_of(ev, arg0(it), &k->intensity); break;
@@ -730,7 +731,7 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 		return;
 	double n = to > from ? to - from : 0;
 	if (n > (double)(LANG_MAX_ITERATIONS - ev->iterations)) {
-		eval_error_span(ev, s, span_join(s->u.loop.from->span, s->u.loop.to->span),
+		eval_error_span(ev, s, diag_span_join(s->u.loop.from->span, s->u.loop.to->span),
 		                "the for loops would run more than %d iterations in all", LANG_MAX_ITERATIONS);
 		/* once: the enclosing loops' later runs would only say it again, elsewhere */
 		ev->iterations = (uint64_t)LANG_MAX_ITERATIONS + 1;
@@ -795,7 +796,7 @@ static void eval_stmts(struct evaluator *ev, struct ast_list *stmts)
 		eval_stmt(ev, stmts->v[i]);
 }
 
-struct evaluator *evaluator_new(struct diag *d, struct scene_desc *out)
+struct evaluator *eval_new(struct diag *d, struct scene_desc *out)
 {
 	struct evaluator *ev = xcalloc(1, sizeof *ev);
 	ev->diag = d;
@@ -822,17 +823,17 @@ void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots)
 		eval_stmt(ev, stmt);
 }
 
-void evaluator_free(struct evaluator *ev)
+void eval_free(struct evaluator *ev)
 {
 	free(ev->slots);
 	free(ev->bad);
 	free(ev);
 }
 
-void lang_eval(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out)
+void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out)
 {
-	struct evaluator *ev = evaluator_new(d, out);
+	struct evaluator *ev = eval_new(d, out);
 	grow_slots(ev, nslots);
 	eval_stmts(ev, stmts);
-	evaluator_free(ev);
+	eval_free(ev);
 }

@@ -15,15 +15,15 @@
 #define LANG_MAX_OBJECTS 10000000
 #define LANG_MAX_STEPS 500000000
 
-/* Evaluates statements that lang_check accepted without errors (nslots is what it
+/* Evaluates statements that check_file accepted without errors (nslots is what it
  * returned) into out, which scene_desc_init prepared. Range errors go to d. */
-void lang_eval(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out);
+void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out);
 
 /* The same one statement at a time, for a file evaluated as it is parsed: each
- * statement after check_statement accepted it, with checker_slots' count. */
+ * statement after check_statement accepted it, with check_slots' count. */
 struct evaluator;
-struct evaluator *evaluator_new(struct diag *d, struct scene_desc *out);
+struct evaluator *eval_new(struct diag *d, struct scene_desc *out);
 void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots);
-void evaluator_free(struct evaluator *ev);
+void eval_free(struct evaluator *ev);
 
 #endif

@@ -9,36 +9,10 @@
 #include "check.h"
 #include "clock.h"
 #include "eval.h"
+#include "file.h"
 #include "lang.h"
 #include "scene_desc.h"
 #include "xalloc.h"
-
-/* Reads standard input whole, like lang_read_file. */
-static int read_stdin(char **text, uint32_t *len)
-{
-	size_t cap = 1 << 16, n = 0;
-	char *buf = xmalloc(cap);
-	size_t got;
-	while ((got = fread(buf + n, 1, cap - n - 1, stdin)) > 0) {
-		n += got;
-		if (n + 1 == cap) {
-			if (cap >= DIAG_MAX_SOURCE_BYTES) {
-				free(buf);
-				return EFBIG;
-			}
-			cap *= 2;
-			buf = xrealloc(buf, cap);
-		}
-	}
-	if (ferror(stdin)) {
-		free(buf);
-		return errno ? errno : EIO;
-	}
-	buf[n] = '\0';
-	*text = buf;
-	*len = (uint32_t)n;
-	return 0;
-}
 
 /* The whole file parsed, then checked, then evaluated: every diagnostic of each phase
  * before the next phase runs, which decides which of them count against the limit on
@@ -50,11 +24,11 @@ static void load_in_phases(struct diag *d, const struct source *src, struct scen
 	struct ast_list stmts = lang_parse(a, a, d, src);
 	double t1 = clock_now();
 	t->parse += t1 - t0;
-	unsigned nslots = lang_check(a, d, src, &stmts); /* parses included files too */
+	unsigned nslots = check_file(a, d, src, &stmts); /* parses included files too */
 	double t2 = clock_now();
 	t->check += t2 - t1;
 	if (d->errors == 0)
-		lang_eval(d, &stmts, nslots, out);
+		eval_file(d, &stmts, nslots, out);
 	t->eval += clock_now() - t2;
 	arena_free(a);
 }
@@ -63,7 +37,7 @@ static void load_in_phases(struct diag *d, const struct source *src, struct scen
  * file of a million statements never holds a million syntax trees. Its diagnostics come
  * in another order than the phases', so it goes on only while that makes no difference
  * (diag_any_order: warnings only, which check.c and eval.c give once per place); the
- * first error makes it give up (see lang_load_scene). */
+ * first error makes it give up (see load_scene). */
 struct stream {
 	struct diag *d;
 	struct diag_mark start;        /* what the diagnostics were when it started */
@@ -95,7 +69,7 @@ static bool stream_statement(void *arg, struct ast *stmt)
 	lap(st, &st->check_s);
 	if (!diag_any_order(st->d, st->start))
 		return false;
-	eval_statement(st->ev, stmt, checker_slots(st->checker));
+	eval_statement(st->ev, stmt, check_slots(st->checker));
 	lap(st, &st->eval_s);
 	return diag_any_order(st->d, st->start);
 }
@@ -107,13 +81,13 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 	double t0 = clock_now();
 	struct arena *nodes = arena_new(), *keep = arena_new();
 	struct stream st = { .d = d, .start = diag_mark(d), .last = clock_now_coarse() };
-	st.checker = checker_new(nodes, keep, d, src, NULL);
-	st.ev = evaluator_new(d, out);
+	st.checker = check_new(nodes, keep, d, src, NULL);
+	st.ev = eval_new(d, out);
 	lang_parse_each(nodes, keep, d, src, stream_statement, &st);
 	/* the file's unused names are warned about at its end, as in phases */
-	checker_free(st.checker, diag_any_order(d, st.start));
+	check_free(st.checker, diag_any_order(d, st.start));
 	bool same = diag_any_order(d, st.start);
-	evaluator_free(st.ev);
+	eval_free(st.ev);
 	arena_free(nodes);
 	arena_free(keep);
 	/* the exact clock says how much time there was, the coarse one how it divides (all
@@ -126,7 +100,7 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 	return same;
 }
 
-enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out,
+enum load_status load_scene(struct diag *d, const char *path, struct scene_desc *out,
                                  struct load_times *times)
 {
 	struct load_times t = { 0 };
@@ -135,7 +109,7 @@ enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_
 	scene_desc_init(out);
 	char *text;
 	uint32_t len;
-	int err = from_stdin ? read_stdin(&text, &len) : lang_read_file(path, &text, &len);
+	int err = from_stdin ? file_read_stdin(&text, &len) : file_read(path, &text, &len);
 	if (err) {
 		diag_plain(d, DIAG_ERROR, "cannot read '%s': %s", from_stdin ? "<stdin>" : path,
 		           err == EFBIG ? "larger than 256 MiB" : strerror(err));

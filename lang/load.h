@@ -5,7 +5,7 @@
 #include "diag.h"
 #include "scene_desc.h"
 
-/* LOAD_TOO_BIG: the scene needs more memory than the machine has (lang_lower). */
+/* LOAD_TOO_BIG: the scene needs more memory than the machine has (lower_scene). */
 enum load_status { LOAD_OK = 0, LOAD_SCENE_ERROR = 1, LOAD_IO_ERROR = 3, LOAD_TOO_BIG = 4 };
 
 struct load_times {
@@ -15,7 +15,7 @@ struct load_times {
 /* Reads the scene at path ("-": standard input), with its includes, and evaluates it into
  * out (always initialised; scene_desc_free it). Diagnostics go to d. The status doubles
  * as the command's exit status. times may be NULL. */
-enum load_status lang_load_scene(struct diag *d, const char *path, struct scene_desc *out,
+enum load_status load_scene(struct diag *d, const char *path, struct scene_desc *out,
                                  struct load_times *times);
 
 #endif

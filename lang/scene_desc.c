@@ -8,7 +8,7 @@ static const char *const pattern_names[PATTERN_COUNT] = {
 	"center", "grid", "random", "jittered", "poisson",
 };
 
-const char *pattern_name(enum sample_pattern p)
+const char *scene_desc_pattern_name(enum sample_pattern p)
 {
 	return pattern_names[p];
 }
@@ -192,7 +192,7 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 
 	fprintf(out, "max_depth %d\n", s->max_depth);
 	fprintf(out, "samples count %d pattern %s seed %llu", s->samples.count,
-	        pattern_name(s->samples.pattern), (unsigned long long)s->samples.seed);
+	        scene_desc_pattern_name(s->samples.pattern), (unsigned long long)s->samples.seed);
 	if (s->samples.target_error > 0)
 		field_num(out, "target_error", s->samples.target_error);
 	fputc('\n', out);

@@ -116,6 +116,6 @@ void scene_desc_init(struct scene_desc *s);
 void scene_desc_free(struct scene_desc *s);
 /* Writes a canonical text form, one line an entity, for golden tests. */
 void scene_desc_dump(const struct scene_desc *s, FILE *out);
-const char *pattern_name(enum sample_pattern p);
+const char *scene_desc_pattern_name(enum sample_pattern p);
 
 #endif

@@ -455,7 +455,7 @@ static void warn_enclosed_lights(struct lowering *lw)
 	}
 }
 
-enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out,
+enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, struct scene *out,
                             struct lower_times *times, int64_t other_bytes)
 {
 	memset(out, 0, sizeof *out);
@@ -504,7 +504,7 @@ enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struc
 	warn_enclosed_lights(&lw);
 
 	for (size_t i = 0; i < lw.nmesh_cache; i++)
-		mesh_data_free(&lw.mesh_cache[i].data);
+		mesh_import_free(&lw.mesh_cache[i].data);
 	free(lw.mesh_cache);
 	free(lw.material_map);
 	if (out->geo.nspheres + out->geo.ntriangles + out->geo.nplanes >= (1u << SHAPE_KIND_SHIFT)) {

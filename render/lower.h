@@ -25,7 +25,7 @@ struct lower_times {
  * the memory the machine has (memory.h), and the first mesh that passes it is an error
  * there, the status LOAD_TOO_BIG; nothing is built for it. Negative: no such count (scn
  * check and scn pov build no BVH and render nothing). */
-enum load_status lang_lower(struct diag *d, const struct scene_desc *desc, struct scene *out,
+enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, struct scene *out,
                             struct lower_times *times, int64_t other_bytes);
 
 #endif

@@ -8,7 +8,7 @@
 
 #include "accel.h"
 
-struct vec3 sky_radiance(const struct sky *sky, struct vec3 d)
+struct vec3 trace_sky(const struct sky *sky, struct vec3 d)
 {
 	switch (sky->kind) {
 	case SKY_BLACK:
@@ -143,7 +143,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 {
 	struct hit h = { .t = INFINITY };
 	if (!accel_intersect(&sc->accel, &sc->geo, r, &h))
-		return sky_radiance(&sc->sky, r->d);
+		return trace_sky(&sc->sky, r->d);
 	struct surface_point sp;
 	shape_surface_at(&sc->geo, r, &h, &sp);
 	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, h.prim)];

@@ -21,6 +21,6 @@ struct ray_stats {
 struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st);
 
 /* What a ray that hits nothing sees in direction d (unit). */
-struct vec3 sky_radiance(const struct sky *sky, struct vec3 d);
+struct vec3 trace_sky(const struct sky *sky, struct vec3 d);
 
 #endif

@@ -32,12 +32,12 @@ int cmd_check(const struct command *self, int argc, char **argv)
 	struct diag d;
 	diag_init(&d, stderr);
 	struct scene_desc desc;
-	enum load_status status = lang_load_scene(&d, scene, &desc, NULL);
+	enum load_status status = load_scene(&d, scene, &desc, NULL);
 	/* lowering reads the mesh files and sky images, so that check finds malformed ones */
 	struct scene sc = { 0 };
 	struct lower_times times;
 	if (status == LOAD_OK)
-		status = lang_lower(&d, &desc, &sc, &times, -1);
+		status = lower_scene(&d, &desc, &sc, &times, -1);
 	diag_flush(&d);
 	if (status == LOAD_OK && dump)
 		scene_desc_dump(&desc, stdout);

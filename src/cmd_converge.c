@@ -732,7 +732,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	struct lower_times wt = { 0 };
 	const char *why_no_pov = NULL;
 	struct image *first[CALIBRATION] = { 0 };  /* the first renders, while the reference is made */
-	rc = (int)lang_load_scene(&d, a.scene, &desc, &lt);
+	rc = (int)load_scene(&d, a.scene, &desc, &lt);
 	diag_flush(&d);
 	if (rc)
 		goto done;
@@ -756,7 +756,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 		goto done;
 	}
 	double t0 = clock_now();
-	rc = (int)lang_lower(&d, &desc, &r.sc, &wt, (int64_t)images);
+	rc = (int)lower_scene(&d, &desc, &r.sc, &wt, (int64_t)images);
 	double lower_s = clock_now() - t0;
 	diag_flush(&d);
 	if (rc)

@@ -41,9 +41,9 @@ int cmd_pov(const struct command *self, int argc, char **argv)
 	struct scene_desc desc;
 	struct scene sc = { 0 };
 	struct lower_times times;
-	int rc = (int)lang_load_scene(&d, scene, &desc, NULL);
+	int rc = (int)load_scene(&d, scene, &desc, NULL);
 	if (rc == 0)
-		rc = (int)lang_lower(&d, &desc, &sc, &times, -1);
+		rc = (int)lower_scene(&d, &desc, &sc, &times, -1);
 	diag_flush(&d);
 	if (rc == 0) {
 		/* the .pov names the sky image relative to its own folder; on standard output,

@@ -71,7 +71,7 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 		} else if (strcmp(opt, "-p") == 0) {
 			a->pattern = -1;
 			for (int p = 0; p < PATTERN_COUNT; p++)
-				if (strcmp(v, pattern_name(p)) == 0)
+				if (strcmp(v, scene_desc_pattern_name(p)) == 0)
 					a->pattern = p;
 			if (a->pattern < 0)
 				return cli_usage_error(self, "unknown pattern '%s' (center, grid, random, jittered, poisson)", v);
@@ -210,7 +210,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	struct scene sc = { 0 };
 	struct image *img = NULL;
 	struct render_options ro = { .threads = (int)a.threads };
-	rc = (int)lang_load_scene(&d, a.scene, &desc, &lt);
+	rc = (int)load_scene(&d, a.scene, &desc, &lt);
 	if (rc == 0)
 		rc = override(self, &a, &desc);
 	if (rc == 0) {
@@ -220,7 +220,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		rc = image_fits(&a, &desc, &d, ro.x1 - ro.x0, ro.y1 - ro.y0);
 	}
 	if (rc == 0)
-		rc = (int)lang_lower(&d, &desc, &sc, &wt, (int64_t)image_bytes(ro.x1 - ro.x0, ro.y1 - ro.y0));
+		rc = (int)lower_scene(&d, &desc, &sc, &wt, (int64_t)image_bytes(ro.x1 - ro.x0, ro.y1 - ro.y0));
 	scene_desc_free(&desc); /* lowered: its memory goes to the BVH */
 	diag_flush(&d);
 	if (rc)

@@ -329,7 +329,7 @@ static void make_chunk(void *ctx, size_t c)
 	struct ref_chunks *rc = ctx;
 	struct bounds bd = { vbox_empty(), vbox_empty() };
 	size_t lo, hi;
-	chunk_items(rc->n, rc->nchunks, c, &lo, &hi);
+	parallel_chunk_items(rc->n, rc->nchunks, c, &lo, &hi);
 	for (size_t k = lo; k < hi; k++) {
 		make_ref(rc->geo, k, &rc->refs[k]);
 		bounds_add(&bd, &rc->refs[k]);
@@ -351,7 +351,7 @@ struct bvh *bvh_build(const struct geometry *geo, bool one_leaf)
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	/* the records in chunks, on all threads where the build will use them */
 	struct bounds chunk_bounds[MAX_CHUNKS];
-	struct ref_chunks rc = { geo, b.refs, n, chunks_of(n), chunk_bounds };
+	struct ref_chunks rc = { geo, b.refs, n, parallel_chunks(n), chunk_bounds };
 	parallel_for(rc.nchunks, make_chunk, &rc);
 	struct bounds root = { vbox_empty(), vbox_empty() };
 	for (size_t c = 0; c < rc.nchunks; c++) {

@@ -79,7 +79,7 @@ static void count_packets(void *ctx, size_t c)
 	bool ids_needed = false;
 	if (c == 0)
 		count_leaf(b, &b->root.index, &b->root.count, &n, &ids_needed);
-	chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
+	parallel_chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		for (int k = 0; k < WIDTH; k++)
 			count_leaf(b, &b->nodes[i].index[k], &b->nodes[i].count[k], &n, &ids_needed);
@@ -94,7 +94,7 @@ static void fill_packets(void *ctx, size_t c)
 	size_t lo, hi, next = pk->first[c];
 	if (c == 0)
 		pack_leaf(b, pk->geo, &b->root.index, &b->root.count, &next);
-	chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
+	parallel_chunk_items(b->nnodes, pk->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		for (int k = 0; k < WIDTH; k++)
 			pack_leaf(b, pk->geo, &b->nodes[i].index[k], &b->nodes[i].count[k], &next);
@@ -106,7 +106,7 @@ static void finalize_leaves(struct bvh *b, const struct geometry *geo)
 {
 	size_t first[MAX_CHUNKS];
 	bool ids_needed[MAX_CHUNKS], any_ids = false;
-	struct packing pk = { b, geo, chunks_of(b->nnodes), first, ids_needed };
+	struct packing pk = { b, geo, parallel_chunks(b->nnodes), first, ids_needed };
 	parallel_for(pk.nchunks, count_packets, &pk);
 	size_t n = 0;
 	for (size_t c = 0; c < pk.nchunks; c++) {
@@ -150,7 +150,7 @@ static void count_kinds(void *ctx, size_t c)
 	struct reordering *ro = ctx;
 	struct kinds k = { { 0, 0 } };
 	size_t lo, hi;
-	chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
+	parallel_chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
 		k.n[shape_kind(ro->b->prims[i])]++;
 	ro->first[c] = k;
@@ -162,7 +162,7 @@ static void copy_chunk(void *ctx, size_t c)
 	uint32_t *prims = ro->b->prims;
 	struct kinds next = ro->first[c];
 	size_t lo, hi;
-	chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
+	parallel_chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++) {
 		enum shape_kind kind = shape_kind(prims[i]);
 		uint32_t k = shape_index(prims[i]), to = next.n[kind]++;
@@ -179,7 +179,7 @@ void bvh_reorder(struct bvh *b, struct geometry *geo)
 	struct kinds first[MAX_CHUNKS];
 	struct reordering ro = { b, geo, geo->nspheres ? xmalloc(geo->nspheres * sizeof *ro.spheres) : NULL,
 		                 geo->ntriangles ? xmalloc(geo->ntriangles * sizeof *ro.triangles) : NULL,
-		                 chunks_of(b->nprims), first };
+		                 parallel_chunks(b->nprims), first };
 	parallel_for(ro.nchunks, count_kinds, &ro);
 	struct kinds sum = { { 0, 0 } };
 	for (size_t c = 0; c < ro.nchunks; c++) {

@@ -45,12 +45,12 @@ void parallel_for(size_t n, void (*fn)(void *ctx, size_t i), void *ctx)
 	free(tid);
 }
 
-size_t chunks_of(size_t n)
+size_t parallel_chunks(size_t n)
 {
 	return n > MIN_CHUNKED ? MAX_CHUNKS : 1;
 }
 
-void chunk_items(size_t n, size_t nchunks, size_t c, size_t *lo, size_t *hi)
+void parallel_chunk_items(size_t n, size_t nchunks, size_t c, size_t *lo, size_t *hi)
 {
 	*lo = n * c / nchunks;
 	*hi = n * (c + 1) / nchunks;

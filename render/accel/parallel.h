@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-enum { MAX_CHUNKS = 64 }; /* the most pieces chunks_of() cuts a pass into */
+enum { MAX_CHUNKS = 64 }; /* the most pieces parallel_chunks() cuts a pass into */
 
 /* Runs fn(ctx, i) for each i in [0, n) on up to as many threads as there are processors
  * (the calling one among them), each thread taking the next i. */
@@ -14,7 +14,7 @@ void parallel_for(size_t n, void (*fn)(void *ctx, size_t i), void *ctx);
 
 /* The pieces a pass over n items is cut into for parallel_for (one when n is small, at
  * most MAX_CHUNKS), and the items [lo, hi) of piece c. */
-size_t chunks_of(size_t n);
-void chunk_items(size_t n, size_t nchunks, size_t c, size_t *lo, size_t *hi);
+size_t parallel_chunks(size_t n);
+void parallel_chunk_items(size_t n, size_t nchunks, size_t c, size_t *lo, size_t *hi);
 
 #endif

@@ -28,7 +28,7 @@
 /* How much of a file holds its header: PLY's must end within it. */
 #define HEADER_MAX 65536
 
-int mesh_fail(char *err, size_t errlen, const char *fmt, ...)
+int mesh_header_fail(char *err, size_t errlen, const char *fmt, ...)
 {
 	va_list ap;
 	va_start(ap, fmt);
@@ -129,14 +129,14 @@ static int ply_counts(const char *head, size_t len, long long size, const char *
 			ok = end = k == 1 && strcmp(word[0], "end_header") == 0;
 		}
 		if (!ok)
-			return mesh_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, '%s', "
+			return mesh_header_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, '%s', "
 			                 "is not PLY", path, line_no + 1, line);
 		if (!element && !end)
 			continue;
 		/* the element before this line is complete */
 		need += count * (bytes ? bytes : 1);
 		if (need > (double)size)
-			return mesh_fail(err, errlen, "malformed mesh file '%s': its PLY header declares %.0f "
+			return mesh_header_fail(err, errlen, "malformed mesh file '%s': its PLY header declares %.0f "
 					 "'%s' elements, more than its %lld bytes can hold", path, count, name, size);
 		if (end)
 			return 0;
@@ -194,7 +194,7 @@ static int off_counts(const char *text, bool is_off, long long size, const char 
 	}
 	double vertices = value[want - 2], faces = value[want - 1];
 	if (2 * (vertices + faces) > (double)size)
-		return mesh_fail(err, errlen, "malformed mesh file '%s': its OFF header declares %.0f vertices "
+		return mesh_header_fail(err, errlen, "malformed mesh file '%s': its OFF header declares %.0f vertices "
 				 "and %.0f faces, more than its %lld bytes can hold", path, vertices, faces, size);
 	return 0;
 }
@@ -214,7 +214,7 @@ int mesh_header_check(const char *path, char *err, size_t errlen)
 {
 	FILE *f = fopen(path, "rb");
 	if (!f)
-		return mesh_fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(errno));
+		return mesh_header_fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(errno));
 	struct stat st;
 	long long size = fstat(fileno(f), &st) == 0 ? (long long)st.st_size : 0;
 	char *head = xmalloc(HEADER_MAX);
@@ -224,11 +224,11 @@ int mesh_header_check(const char *path, char *err, size_t errlen)
 	fclose(f);
 	int rc = 0;
 	if (e) {
-		rc = mesh_fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(e));
+		rc = mesh_header_fail(err, errlen, "cannot read mesh file '%s': %s", path, strerror(e));
 	} else if (is_ply(head, n)) {
 		size_t end = ply_header_end(head, n);
 		if (!end)
-			rc = mesh_fail(err, errlen, "malformed mesh file '%s': the PLY header has no end_header line%s",
+			rc = mesh_header_fail(err, errlen, "malformed mesh file '%s': the PLY header has no end_header line%s",
 				       path, n == HEADER_MAX ? " in its first 64 KiB" : "");
 		else
 			rc = ply_counts(head, end, size - (long long)end, path, err, errlen);

@@ -12,6 +12,6 @@ int mesh_header_check(const char *path, char *err, size_t errlen);
 
 /* Writes the message into err (errlen bytes) and returns 1: the failure of the mesh
  * reader's functions. */
-int mesh_fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+int mesh_header_fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 #endif

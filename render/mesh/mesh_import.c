@@ -69,7 +69,7 @@ static int malformed(const char *path, char *err, size_t errlen)
 	}
 	if (!msg || !*msg)
 		msg = "the reader gives no reason";
-	return mesh_fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);
+	return mesh_header_fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);
 }
 
 /* Whether assimp's last error is validation finding no faces, or no mesh: a file of
@@ -99,7 +99,7 @@ static int set_primitive_types(const struct aiScene *sc, const char *path, char 
 		for (unsigned j = 0; j < m->mNumFaces; j++) {
 			unsigned n = m->mFaces[j].mNumIndices;
 			if (n == 0)
-				return mesh_fail(err, errlen, "malformed mesh file '%s': face %u has no vertices "
+				return mesh_header_fail(err, errlen, "malformed mesh file '%s': face %u has no vertices "
 						 "(is the file cut short?)", path, j + 1);
 			types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE :
 			         n == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
@@ -107,7 +107,7 @@ static int set_primitive_types(const struct aiScene *sc, const char *path, char 
 		m->mPrimitiveTypes = types;
 		polygons = polygons || (types & (aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON));
 	}
-	return polygons ? 0 : mesh_fail(err, errlen, "no triangles in '%s'", path);
+	return polygons ? 0 : mesh_header_fail(err, errlen, "no triangles in '%s'", path);
 }
 
 /* Whether the second stage's memory, and that of copying and joining what it gives,
@@ -131,7 +131,7 @@ static bool second_stage_fits(const struct aiScene *sc, const char *path, char *
 	char msg[160];
 	if (memory_fits(PER_VERTEX * vertices + PER_CORNER * corners, msg, sizeof msg))
 		return true;
-	mesh_fail(err, errlen, "reading mesh file '%s' (%llu vertices, %llu face corners) %s", path,
+	mesh_header_fail(err, errlen, "reading mesh file '%s' (%llu vertices, %llu face corners) %s", path,
 		  (unsigned long long)vertices, (unsigned long long)corners, msg);
 	return false;
 }
@@ -148,7 +148,7 @@ static const struct aiScene *import(const char *path, bool *too_big, char *err, 
 	aiReleasePropertyStore(props);
 	if (!sc) {
 		if (validation_found_no_faces())
-			mesh_fail(err, errlen, "no triangles in '%s'", path);
+			mesh_header_fail(err, errlen, "no triangles in '%s'", path);
 		else
 			malformed(path, err, errlen);
 		return NULL;
@@ -271,18 +271,18 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 			nv += sc->mMeshes[i]->mNumVertices;
 	if (nv > UINT32_MAX) {
 		aiReleaseImport(sc);
-		return mesh_fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
+		return mesh_header_fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
 				 (unsigned long)UINT32_MAX);
 	}
 	copy_scene(sc, normals_usable(sc), out);
 	aiReleaseImport(sc);
 	if (out->nfaces == 0)
-		return mesh_fail(err, errlen, "no triangles in '%s'", path);
+		return mesh_header_fail(err, errlen, "no triangles in '%s'", path);
 	mesh_join(out);
 	return 0;
 }
 
-void mesh_data_free(struct mesh_data *m)
+void mesh_import_free(struct mesh_data *m)
 {
 	free(m->vertices);
 	free(m->normals);

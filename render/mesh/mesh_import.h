@@ -23,12 +23,13 @@ struct mesh_data {
  * float, so they are exact only to float precision.
  * Returns 0, or writes into err a message naming path and the problem and returns nonzero
  * with *out empty: ENOMEM when reading it would need more memory than the machine has
- * (memory.h; found before assimp's post-processing, which would crash), 1 otherwise. For a malformed file the message is the reader's own; assimp 5.2's
- * OBJ and PLY readers give no line number, some others (FBX) do. The caller frees *out
- * with mesh_data_free. Not thread-safe: assimp keeps its last error in a global. */
+ * (memory.h; found before assimp's post-processing, which would crash), 1 otherwise.
+ * For a malformed file the message is the reader's own; assimp 5.2's OBJ and PLY
+ * readers give no line number, some others (FBX) do. The caller frees *out with
+ * mesh_import_free. Not thread-safe: assimp keeps its last error in a global. */
 int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errlen);
 
 /* Frees m's arrays and empties it; m may be empty already. */
-void mesh_data_free(struct mesh_data *m);
+void mesh_import_free(struct mesh_data *m);
 
 #endif

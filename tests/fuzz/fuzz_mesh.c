@@ -13,6 +13,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	struct mesh_data m;
 	char err[512];
 	mesh_import(path, &m, err, sizeof err);
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 	return 0;
 }

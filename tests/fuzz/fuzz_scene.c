@@ -20,8 +20,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	struct scene_desc desc;
 	struct scene sc = { 0 };
 	struct lower_times times;
-	if (lang_load_scene(&d, path, &desc, NULL) == LOAD_OK)
-		lang_lower(&d, &desc, &sc, &times, -1);  /* as scn check: no memory count */
+	if (load_scene(&d, path, &desc, NULL) == LOAD_OK)
+		lower_scene(&d, &desc, &sc, &times, -1);  /* as scn check: no memory count */
 	diag_flush(&d);
 	scene_free(&sc);
 	scene_desc_free(&desc);

@@ -114,9 +114,9 @@ static void test_obj(void)
 	      has_vertex(&m, 0, 1, 0, 0));
 	CHECK_NEAR(total_area(&m), 1, 1e-15);
 	check_faces_up(&m);
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 	CHECK(m.vertices == NULL && m.faces == NULL && m.nvertices == 0 && m.nfaces == 0);
-	mesh_data_free(&m); /* freeing an empty one is harmless */
+	mesh_import_free(&m); /* freeing an empty one is harmless */
 }
 
 static void test_quad(void)
@@ -129,7 +129,7 @@ static void test_quad(void)
 	CHECK(indices_in_range(&m));
 	CHECK_NEAR(total_area(&m), 2, 1e-15);
 	check_faces_up(&m);
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 static void test_normals(void)
@@ -142,7 +142,7 @@ static void test_normals(void)
 	CHECK(m.nvertices == 6);
 	CHECK(m.nnormals == m.nvertices && m.normals != NULL);
 	if (m.nnormals != m.nvertices) {
-		mesh_data_free(&m);
+		mesh_import_free(&m);
 		return;
 	}
 	for (size_t f = 0; f < m.nfaces; f++) {
@@ -156,7 +156,7 @@ static void test_normals(void)
 			CHECK(n[2] == 0);
 		}
 	}
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 static void test_partial_normals(void)
@@ -168,7 +168,7 @@ static void test_partial_normals(void)
 	CHECK(m.nfaces == 2);
 	CHECK(m.nvertices == 4); /* joined again once the normals are gone */
 	CHECK(indices_in_range(&m));
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 static void test_ascii_ply(void)
@@ -184,7 +184,7 @@ static void test_ascii_ply(void)
 	CHECK(m.nnormals == 5);
 	for (size_t i = 0; i < m.nnormals; i++)
 		CHECK(m.normals[i][0] == 0 && m.normals[i][1] == 0 && m.normals[i][2] == 1);
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 static void test_binary_ply(void)
@@ -198,7 +198,7 @@ static void test_binary_ply(void)
 	CHECK(indices_in_range(&m));
 	CHECK(has_vertex(&m, 0.25, 0.5, -1.5, 0));
 	CHECK(has_vertex(&m, 1, 1, 0, 0));
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 /* One triangle placed by two nodes: the transforms are applied, normals included. */
@@ -223,7 +223,7 @@ static void test_nodes(void)
 			CHECK_NEAR(n[2], moved ? 1 : 0, tol);
 		}
 	}
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 static void test_points_and_lines_left_out(void)
@@ -236,7 +236,7 @@ static void test_points_and_lines_left_out(void)
 	for (size_t f = 0; f < m.nfaces; f++)
 		for (int k = 0; k < 3; k++)
 			CHECK(m.vertices[m.faces[f][k]][0] != 5);
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 /* mesh_import, for a file on which assimp's reader throws and leaks what it had built:
@@ -273,7 +273,7 @@ static void expect_error(const char *path, bool leaks, const char *want, const c
 	}
 	CHECK(m.vertices == NULL && m.normals == NULL && m.faces == NULL);
 	CHECK(m.nvertices == 0 && m.nnormals == 0 && m.nfaces == 0);
-	mesh_data_free(&m);
+	mesh_import_free(&m);
 }
 
 static void test_errors(void)
@@ -368,7 +368,7 @@ static void test_quiet(void)
 		const char *path = fixture(names[i]);
 		bool leaks = strcmp(names[i], "bad_number.ply") == 0;
 		if ((leaks ? import_leaky(path, &m, err, sizeof err) : mesh_import(path, &m, err, sizeof err)) == 0)
-			mesh_data_free(&m);
+			mesh_import_free(&m);
 	}
 	fflush(stdout);
 	fflush(stderr);
