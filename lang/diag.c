@@ -263,21 +263,14 @@ static FILE *begin_record(struct diag *d, enum diag_level level, const struct sp
 			}
 		}
 	}
-	FILE *f = open_memstream(buf, len);
-	if (!f) {
-		fprintf(stderr, "scn: out of memory (diagnostics)\n");
-		exit(4);
-	}
-	return f;
+	return xcheck(open_memstream(buf, len), "diagnostics");
 }
 
 /* Closes the stream of begin_record (which sets *buf) and appends its text. */
 static void end_record(struct diag *d, FILE *f, char **buf, size_t *len)
 {
-	if (fclose(f) != 0) {
-		fprintf(stderr, "scn: out of memory (diagnostics)\n");
-		exit(4);
-	}
+	if (fclose(f) != 0)
+		xout_of_memory("diagnostics");
 	struct diag_record *r = &d->records[d->nrecords - 1];
 	/* A message quotes strings and file names of the scene: their control bytes (an
 	 * escape sequence in an include's name) must not reach the terminal either. */

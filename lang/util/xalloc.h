@@ -1,4 +1,5 @@
-/* xalloc.h: allocation that never returns NULL; on failure scn says so and exits 4. */
+/* xalloc.h: allocation that never returns NULL; on failure scn says so and exits 4,
+ * through the one path that removes unfinished output (cleanup.h). */
 #ifndef SCN_XALLOC_H
 #define SCN_XALLOC_H
 
@@ -19,5 +20,13 @@ void *xbig_alloc(size_t size);
 /* Grows *ptr (an array of *cap elements of elem bytes) to hold at least need elements. */
 void xgrow(void **ptr, size_t *cap, size_t need, size_t elem);
 char *xstrdup(const char *s);
+
+/* Running out of memory: "scn: out of memory (WHAT)" on standard error, WHAT from fmt,
+ * then cleanup_exit(4). For what a library allocates, which it reports as a failure of
+ * its own. */
+_Noreturn void xout_of_memory(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* p, a library's allocation (a stream, a scanner); when it is NULL, or when SCN_ALLOC_FAIL
+ * makes this allocation fail, xout_of_memory(what). */
+void *xcheck(void *p, const char *what);
 
 #endif

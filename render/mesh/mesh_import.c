@@ -12,7 +12,6 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "cleanup.h"
 #include "memory.h"
 #include "mesh_header.h"
 #include "mesh_import.h"
@@ -63,10 +62,8 @@ static int trimmed(const char *msg)
 static int malformed(const char *path, char *err, size_t errlen)
 {
 	const char *msg = aiGetErrorString();
-	if (msg && strcmp(msg, "std::bad_alloc") == 0) {
-		fprintf(stderr, "scn: out of memory (reading mesh file '%s')\n", path);
-		cleanup_exit(4);
-	}
+	if (msg && strcmp(msg, "std::bad_alloc") == 0)
+		xout_of_memory("reading mesh file '%s'", path);
 	if (!msg || !*msg)
 		msg = "the reader gives no reason";
 	return mesh_header_fail(err, errlen, "malformed mesh file '%s': %.*s", path, trimmed(msg), msg);

@@ -3,6 +3,7 @@
 FAULT_TESTS = \
 	tests/faults/signals.sh \
 	tests/faults/output.sh \
-	tests/faults/memory.sh
+	tests/faults/memory.sh \
+	tests/faults/alloc_sweep.sh
 TESTS += $(FAULT_TESTS)
 EXTRA_DIST += $(FAULT_TESTS)
