@@ -1,5 +1,9 @@
 # lang/local.mk: the front end: lexer, parser, AST, checker, evaluator, diagnostics.
+# no render/ here: the front end knows nothing of the renderer (parser.h is built in
+# the build tree's lang/)
+LANG_INCLUDES = -I$(srcdir)/%D% -I%D% $(UTIL_INCLUDES)
 noinst_LIBRARIES += lang/libscnlang.a
+lang_libscnlang_a_CPPFLAGS = $(BASE_CPPFLAGS) $(LANG_INCLUDES)
 lang_libscnlang_a_SOURCES = \
 	%D%/arena.c %D%/arena.h \
 	%D%/ast.c %D%/ast.h \

@@ -23,3 +23,4 @@ include tests/faults/local.mk
 include tests/valgrind/local.mk
 include tests/extreme/local.mk
 include tests/fuzz/local.mk
+include tests/layout/local.mk

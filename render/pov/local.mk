@@ -1,5 +1,7 @@
 # render/pov/local.mk: the POV-Ray export of a lowered scene.
+POV_INCLUDES = -I$(srcdir)/%D% $(RENDER_INCLUDES)
 noinst_LIBRARIES += render/pov/libscnpov.a
+render_pov_libscnpov_a_CPPFLAGS = $(BASE_CPPFLAGS) $(POV_INCLUDES)
 render_pov_libscnpov_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
 render_pov_libscnpov_a_SOURCES = %D%/pov_export.c %D%/pov_export.h %D%/pov_material.c %D%/pov_material.h \
 	%D%/pov_write.c %D%/pov_write.h
