@@ -1,5 +1,5 @@
 /* cmd_pov.c: scn pov: load and lower a scene, then write the POV-Ray 3.7 scene that
- * renders the same image (render/pov_export.c), atomically, or to standard output. */
+ * renders the same image (render/pov/pov_export.c), atomically, or to standard output. */
 #include "config.h"
 
 #include <stdio.h>

@@ -1,4 +1,5 @@
-/* fuzz_exr.c: libFuzzer harness for the EXR reader (render/exr.c over OpenEXRCore). */
+/* fuzz_exr.c: libFuzzer harness for the EXR reader (render/image/exr.c over
+ * OpenEXRCore). */
 #include "fuzz_image.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -1,6 +1,6 @@
-/* fuzz_mesh.c: libFuzzer harness for the mesh reader (render/mesh_import.c over assimp).
- * assimp picks its reader by the file's extension, so the input's first byte picks it
- * (its value mod 4: '0' PLY, '1' OBJ, '2' STL, '3' OFF) and the rest is the file. */
+/* fuzz_mesh.c: libFuzzer harness for the mesh reader (render/mesh/mesh_import.c over
+ * assimp). assimp picks its reader by the file's extension, so the input's first byte
+ * picks it (its value mod 4: '0' PLY, '1' OBJ, '2' STL, '3' OFF) and the rest is the file. */
 #include "fuzz.h"
 #include "mesh_import.h"
 

@@ -1,4 +1,4 @@
-/* fuzz_png.c: libFuzzer harness for the PNG reader (render/png.c over libpng). */
+/* fuzz_png.c: libFuzzer harness for the PNG reader (render/image/png.c over libpng). */
 #include "fuzz_image.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
