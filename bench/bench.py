@@ -131,7 +131,7 @@ def scene_table(work, runs, table_scenes):
             wall, mb, _ = timed(cmd, cwd=work)
             p_runs.append({"wall": wall, "mb": mb})
         s_med = median_run(s_runs)
-        s_med["rmse"] = image_rmse(os.path.join(work, file[:-4] + "-scn.png"), os.path.join(work, file[:-4] + ".png"))
+        s_med["rmse"] = image_rmse(os.path.join(work, file[:-4] + "-scn.png"), os.path.join(work, file[:-4] + "-pov.png"))
         rows.append((name, what, scene_settings(scene), s_med, median_run(p_runs),
                      max(r["mb"] for r in s_runs), max(r["mb"] for r in p_runs), cmd))
     return rows

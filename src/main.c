@@ -41,10 +41,10 @@ static const struct command commands[] = {
 	{ "pov", "scn pov SCENE [-o OUT.pov]",
 	  "Writes the POV-Ray 3.7 scene that renders the same image as SCENE ('-' reads standard\n"
 	  "input) to OUT.pov, by default the scene's name with .pov ('-o -': standard output).\n"
-	  "Its first lines are comments with the povray command line that renders it (run in the\n"
-	  "file's folder; a 16-bit linear PNG) and with whatever POV-Ray cannot match exactly,\n"
-	  "such as random sample patterns. The file is written to a temporary file and renamed\n"
-	  "into place.\n"
+	  "Its third line, '// Render: povray ...', is the command that renders it, run in the\n"
+	  "file's folder, into NAME-pov.png (a 16-bit linear PNG; NAME.png is scn render's); the\n"
+	  "comments after it say what POV-Ray cannot match exactly, such as random sample\n"
+	  "patterns. The file is written to a temporary file and renamed into place.\n"
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written.\n",
 	  cmd_pov },

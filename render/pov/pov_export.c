@@ -585,9 +585,11 @@ static void write_header(struct pov *p)
 	const char *name = p->opt->pov_name ? p->opt->pov_name : "scene.pov";
 	size_t len = strlen(name);
 	size_t stem = len > 4 && strcmp(name + len - 4, ".pov") == 0 ? len - 4 : len;
-	char *png = xmalloc(stem + 5);
+	/* NAME-pov.png: NAME.png is what scn render writes by default, which POV-Ray's
+	 * image must not overwrite */
+	char *png = xmalloc(stem + 9);
 	memcpy(png, name, stem);
-	memcpy(png + stem, ".png", 5);
+	memcpy(png + stem, "-pov.png", 9);
 
 	int scale = 1;                 /* grid: render n times the size and average n x n blocks */
 	char aa[64] = "-A";

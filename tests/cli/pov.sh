@@ -24,7 +24,7 @@ for scene in "$SCN_SRCDIR"/examples/*.scn; do
 	[ -s "$name.pov" ] || { fail "no $name.pov"; continue; }
 	expect_grep "$name.pov" '^#version 3\.7;$'
 	expect_grep "$name.pov" '^global_settings \{ assumed_gamma 1\.0 max_trace_level [0-9]+ adc_bailout 0 ambient_light rgb 0 \}$'
-	expect_grep "$name.pov" "^// Render: povray -D (-A|\+A0\.0 \+AM2 \+R[0-9] -J) \+W[0-9]+ \+H[0-9]+ \+FN16 File_Gamma=1\.0 \+I$name\.pov \+O$name\.png\$"
+	expect_grep "$name.pov" "^// Render: povray -D (-A|\+A0\.0 \+AM2 \+R[0-9] -J) \+W[0-9]+ \+H[0-9]+ \+FN16 File_Gamma=1\.0 \+I$name\.pov \+O$name-pov\.png\$"
 	expect_grep "$name.pov" '^camera \{ perspective location <.*> look_at <.*> sky <.*> right x\*[0-9]+/[0-9]+ up y angle [0-9.]+ \}$'
 	expect_grep "$name.pov" '^background \{ rgb <'
 	# the comments come first: nothing but comments before #version
@@ -64,7 +64,7 @@ mesh { vertices { <1.2, 0.1, 1.5>, <2.4, 0.1, 1.8>, <1.8, 1.5, 1.6>, <2.6, 1.3, 
 triangle { <-2.5, 0.05, 2>, <-1, 0.05, 2.5>, <-1.8, 1.6, 2.2> material { diffuse <0.2, 0.3, 0.8> } }
 EOF
 expect_status 0 "$SCN" pov features.scn
-has features.pov '// Render: povray -D -A +W40 +H30 +FN16 File_Gamma=1.0 +Ifeatures.pov +Ofeatures.png'
+has features.pov '// Render: povray -D -A +W40 +H30 +FN16 File_Gamma=1.0 +Ifeatures.pov +Ofeatures-pov.png'
 has features.pov 'camera { perspective location <0, 1.5, -5> look_at <0, 0.8, 0> sky <0, 1, 0> right x*40/30 up y angle 60 }'
 has features.pov 'sky_sphere { pigment { function { min(max(y, 0), 1) } color_map { [0 rgb <0.75, 0.85, 1>] [1 rgb <0.15, 0.35, 0.8>] } } }'
 has features.pov 'light_source { <-5, 6, -5> color rgb <1, 0.9, 0.8> }'
@@ -93,11 +93,11 @@ has features.pov 'triangle { <-2.5, 0.05, 2>, <-1, 0.05, 2.5>, <-1.8, 1.6, 2.2> 
 # sampling: grid renders n times the size; random patterns are the nearest AA, not exact
 printf 'samples { count 4 pattern grid }\n' | cat features.scn - >grid.scn
 expect_status 0 "$SCN" pov grid.scn
-has grid.pov '// Render: povray -D -A +W80 +H60 +FN16 File_Gamma=1.0 +Igrid.pov +Ogrid.png'
+has grid.pov '// Render: povray -D -A +W80 +H60 +FN16 File_Gamma=1.0 +Igrid.pov +Ogrid-pov.png'
 has grid.pov '--downsample 2'
 printf 'samples { count 16 pattern jittered }\n' | cat features.scn - >jit.scn
 expect_status 0 "$SCN" pov jit.scn
-has jit.pov '// Render: povray -D +A0.0 +AM2 +R3 -J +W40 +H30 +FN16 File_Gamma=1.0 +Ijit.pov +Ojit.png'
+has jit.pov '// Render: povray -D +A0.0 +AM2 +R3 -J +W40 +H30 +FN16 File_Gamma=1.0 +Ijit.pov +Ojit-pov.png'
 has jit.pov 'NOT pixel-exact'
 
 # a smooth triangle with normals on both sides: POV-Ray would drop a smooth_triangle
@@ -115,7 +115,7 @@ expect_status 0 "$SCN" pov ../features.scn
 [ -f features.pov ] || fail "the default output is not features.pov in the current directory"
 expect_status 0 "$SCN" pov - <../features.scn
 [ -f stdin.pov ] || fail "a scene from standard input does not default to stdin.pov"
-has stdin.pov '+Istdin.pov +Ostdin.png'
+has stdin.pov '+Istdin.pov +Ostdin-pov.png'
 expect_status 0 "$SCN" pov ../features.scn -o -
 expect_grep "$work/out" '^#version 3\.7;$'
 [ -f ./- ] && fail "-o - wrote a file named -"
@@ -162,7 +162,7 @@ povray_run() {
 if povray_run features.pov; then
 	"$SCN" render features.scn -o features-scn.png --bit-depth 16 -q ||
 		fail "scn render features.scn exited $?"
-	"$SCN" diff features-scn.png features.png --max-error 2/65535 >diff.out 2>&1 ||
+	"$SCN" diff features-scn.png features-pov.png --max-error 2/65535 >diff.out 2>&1 ||
 		{ fail "POV-Ray's render of features.pov differs from scn's"; cat diff.out; }
 fi
 # grid sampling: POV-Ray at twice the size, averaged in 2 x 2 blocks; with dimmer lights, as
@@ -171,11 +171,11 @@ sed 's/color <1, 0.9, 0.8>/color <0.6, 0.5, 0.4>/' grid.scn >grid2.scn
 expect_status 0 "$SCN" pov grid2.scn
 if povray_run grid2.pov; then
 	"$SCN" render grid2.scn -o grid2-scn.exr --float -q || fail "scn render grid2.scn exited $?"
-	"$SCN" diff grid2-scn.exr grid2.png --downsample 2 --max-error 2/65535 >diff.out 2>&1 ||
+	"$SCN" diff grid2-scn.exr grid2-pov.png --downsample 2 --max-error 2/65535 >diff.out 2>&1 ||
 		{ fail "POV-Ray's render of grid2.pov differs from scn's"; cat diff.out; }
 fi
 # a sky image, named from the .pov's own folder
 if povray_run sub/skybox.pov +W64 +H40; then
-	[ -f sub/skybox.png ] || fail "POV-Ray did not write sub/skybox.png"
+	[ -f sub/skybox-pov.png ] || fail "POV-Ray did not write sub/skybox-pov.png"
 fi
 finish
