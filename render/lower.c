@@ -455,6 +455,25 @@ static void warn_enclosed_lights(struct lowering *lw)
 	}
 }
 
+/* For a render: warns when the image can show nothing but the sky, as an empty scene or
+ * one without light would otherwise render black without a word. */
+static void warn_dark(struct lowering *lw)
+{
+	const struct scene *sc = lw->sc;
+	if (!sc->geo.nspheres && !sc->geo.nplanes && !sc->geo.ntriangles) {
+		diag_plain(lw->diag, DIAG_WARNING, "the scene has no objects: its image is the sky alone");
+		return;
+	}
+	if (sc->nlights)
+		return;
+	for (size_t i = 0; i < sc->nmaterials; i++)
+		if (!vzero(sc->materials[i].emit))
+			return;
+	diag_plain(lw->diag, DIAG_WARNING,
+	           "the scene has no lights and no material emits: its objects show only the sky they reflect"
+	           " or transmit");
+}
+
 enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, struct scene *out,
                             struct lower_times *times, int64_t other_bytes)
 {
@@ -502,6 +521,8 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	                                   desc->samples.target_error };
 	out->max_depth = desc->max_depth;
 	warn_enclosed_lights(&lw);
+	if (other_bytes >= 0 && d->errors == errors)
+		warn_dark(&lw);
 
 	for (size_t i = 0; i < lw.nmesh_cache; i++)
 		mesh_import_free(&lw.mesh_cache[i].data);

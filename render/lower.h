@@ -23,8 +23,9 @@ struct lower_times {
  * other_bytes is what the run will hold besides the scene (its images): with it, the
  * scene's objects and then each mesh as it is read are counted, with their BVH, against
  * the memory the machine has (memory.h), and the first mesh that passes it is an error
- * there, the status LOAD_TOO_BIG; nothing is built for it. Negative: no such count (scn
- * check and scn pov build no BVH and render nothing). */
+ * there, the status LOAD_TOO_BIG; nothing is built for it; and a scene whose image can
+ * show nothing but the sky (no objects; no light and nothing that emits) is warned about.
+ * Negative: neither (scn check and scn pov build no BVH and render nothing). */
 enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, struct scene *out,
                             struct lower_times *times, int64_t other_bytes);
 

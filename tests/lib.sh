@@ -25,6 +25,11 @@ expect_grep() {
 	grep -Eq -- "$2" "$1" || { fail "$1 lacks /$2/"; sed 's/^/  | /' "$1" | head -20; }
 }
 
+# only_line FILE LINE: FILE holds exactly LINE
+only_line() {
+	[ "$(cat "$1")" = "$2" ] || { fail "expected only '$2' in $1"; sed 's/^/  | /' "$1"; }
+}
+
 finish() {
 	[ "$fails" -eq 0 ] && exit 0
 	echo "$fails failure(s)"

@@ -255,4 +255,16 @@ if ! (: >locked/probe) 2>/dev/null; then
 	[ -e locked/new.png ] && fail "an unwritable directory got a new file"
 fi
 chmod u+w locked
+# --- a render that can show nothing but the sky is warned about (scn check says nothing) ---
+printf 'camera { resolution 8, 6 }\nlight { position <0, 5, 0> }\n' >empty.scn
+expect_status 0 "$SCN" render empty.scn -o empty.png -q
+only_line "$work/err" "scn: warning: the scene has no objects: its image is the sky alone"
+expect_status 0 "$SCN" check empty.scn
+only_line "$work/err" ""
+printf 'camera { resolution 8, 6 }\nsphere { <0, 0, 0>, 1 }\n' >dark.scn
+expect_status 0 "$SCN" render dark.scn -o dark.png -q
+only_line "$work/err" "scn: warning: the scene has no lights and no material emits: its objects show only the sky they reflect or transmit"
+printf 'camera { resolution 8, 6 }\nsphere { <0, 0, 0>, 1  material { emit 1 } }\n' >glow.scn
+expect_status 0 "$SCN" render glow.scn -o glow.png -q
+only_line "$work/err" ""
 finish

@@ -8,11 +8,6 @@ cd "$work" || exit 99
 printf 'sphere { <0, 0, 0>, -1 }\n' >bad.scn
 printf 'camera { resolution 8, 6 }\nsphere { <0, 0, 5>, 1 }\n' >good.scn
 
-# only_line FILE LINE: FILE holds exactly LINE
-only_line() {
-	[ "$(cat "$1")" = "$2" ] || { fail "expected only '$2' in $1"; sed 's/^/  | /' "$1"; }
-}
-
 expect_status 3 "$SCN" render bad.scn -o nodir/out.png
 only_line "$work/err" "scn: cannot write 'nodir/out.png': No such file or directory"
 expect_status 3 "$SCN" render bad.scn -o bad.scn/out.png
