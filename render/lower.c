@@ -161,7 +161,8 @@ static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
  * scaled t), which overflow a double from about 1e102, and an overflow would be a
  * silently missing object. */
 #define MAX_EXTENT 1e100
-/* ... and a sphere below this radius, whose r^2 would underflow to 0 and meet every ray. */
+/* ... and a sphere below this radius, whose r^2 would underflow, is not drawn (with a
+ * warning): it is valid, only too small to compute with, and too small to see. */
 #define MIN_RADIUS 1e-100
 
 /* Reports what at `at` when it reaches extent from the origin (after its transforms). */
@@ -346,16 +347,17 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 	case OBJ_SPHERE: {
 		/* only uniform scales reach a sphere: any column's length is the scale */
 		double scale = hypot(hypot(x->m[0][0], x->m[1][0]), x->m[2][0]); /* no underflow at 1e-250 */
+		struct sphere s = { xform_point(x, v3a(o->u.sphere.center)), o->u.sphere.radius * scale, 0 };
+		check_extent(lw, o->span, "this sphere", extent_of(s.center) + s.radius);
+		if (!(s.radius >= MIN_RADIUS)) {
+			diag_warning(lw->diag, o->span,
+			             "this sphere's radius is %g, below 1e-100, too small to compute with: it is not drawn",
+			             s.radius);
+			break;
+		}
+		s.surface = add_surface(lw, o);
 		xgrow((void **)&sc->geo.spheres, &lw->cap_spheres, sc->geo.nspheres + 1, sizeof *sc->geo.spheres);
-		struct sphere *s = &sc->geo.spheres[sc->geo.nspheres++];
-		s->center = xform_point(x, v3a(o->u.sphere.center));
-		s->radius = o->u.sphere.radius * scale;
-		s->surface = add_surface(lw, o);
-		check_extent(lw, o->span, "this sphere", extent_of(s->center) + s->radius);
-		if (!(s->radius >= MIN_RADIUS))
-			diag_error(lw->diag, o->span,
-			           "this sphere's radius is %g, below the limit of 1e-100 (its square would underflow)",
-			           s->radius);
+		sc->geo.spheres[sc->geo.nspheres++] = s;
 		break;
 	}
 	case OBJ_PLANE: {

@@ -101,10 +101,11 @@ EXTREME_EXPECT = \
 	tests/extreme/scale_3e-6.expect \
 	tests/extreme/scale_7e7.expect \
 	tests/extreme/subnormal_dirs.expect \
+	tests/extreme/tiny_radius.expect \
 	tests/extreme/tiny_sphere_2e-6.expect \
 	tests/extreme/tiny_sphere_5e-6.expect
 EXTREME_REFUSED = tests/extreme/huge_mesh.err tests/extreme/huge_sphere.err tests/extreme/literal_1e400.err \
-	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err tests/extreme/tiny_radius.err
+	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err
 EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
 	tests/extreme/run-extreme tests/extreme/compare-pov tests/extreme/accel-grid.sh \
 	tests/extreme/world.inc tests/extreme/ground.inc tests/extreme/dark.inc tests/extreme/grazing.inc \

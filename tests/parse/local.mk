@@ -80,3 +80,5 @@ EXTRA_DIST += tests/parse/lexing.scn tests/parse/lexing.dump tests/parse/lexing.
 # warnings (no error) in a scene loaded one statement at a time read as in phases
 TESTS += tests/parse/warnings_streamed.scn
 EXTRA_DIST += tests/parse/warnings_streamed.scn tests/parse/warnings_streamed.dump tests/parse/warnings_streamed.err
+TESTS += tests/parse/tiny_radius.scn
+EXTRA_DIST += tests/parse/tiny_radius.scn tests/parse/tiny_radius.dump tests/parse/tiny_radius.err
