@@ -43,11 +43,16 @@ struct ast_block {
 struct binding;
 
 /* A node is allocated only as large as its kind's member of u needs (ast_new): a
- * scene of a million spheres holds tens of millions of nodes. */
+ * scene of a million spheres holds tens of millions of nodes. The flags share the
+ * header's bytes with kind and type. */
 struct ast {
 	uint8_t kind;          /* enum ast_kind */
 	uint8_t type;          /* enum ast_type: check.c's type of an expression */
 	bool reported;         /* eval.c: an error here was reported once already */
+	bool failed;           /* check.c, on a statement: it had an error, or uses a name whose
+	                        * definition had one; eval.c skips it, so that the value errors
+	                        * of the other statements come in the same run, and none that
+	                        * follows only from an error already reported */
 	uint16_t depth;        /* expression nesting, bounded by LANG_MAX_NESTING (+1 until checked) */
 	struct span span;
 	union {

@@ -123,9 +123,12 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 	if (s->u.stmt.value) {   /* samples N, max_depth N */
 		if (s->u.stmt.value->kind != AST_ERROR)
 			check_value(c, s->u.stmt.value, S_NUM, kw_name(kw));
+		else
+			c->tainted = true;
 		return;
 	}
 	if (s->u.stmt.block->broken) { /* a syntax error was reported inside */
+		c->tainted = true;
 		if (kw == KW_MATERIAL)
 			s->u.stmt.b = names_bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
 		return;
@@ -221,7 +224,7 @@ static void unknown_statement(struct checker *c, struct ast *s)
 	diag_error(c->diag, s->u.item.name_span, "unknown statement '%s'%s", name, hint);
 }
 
-void check_statement(struct checker *c, struct ast *s)
+static void check_parts(struct checker *c, struct ast *s)
 {
 	switch (s->kind) {
 	case AST_LET: {
@@ -267,6 +270,35 @@ void check_statement(struct checker *c, struct ast *s)
 	default:
 		break;
 	}
+}
+
+/* The binding a statement makes, if any. */
+static struct binding *binding_of(struct ast *s)
+{
+	switch (s->kind) {
+	case AST_LET: return s->u.let.b;
+	case AST_FOR: return s->u.loop.b;
+	case AST_BLOCK_STMT: return s->u.stmt.kw == KW_MATERIAL ? s->u.stmt.b : NULL;
+	default: return NULL;
+	}
+}
+
+/* Checks s, and marks it failed when it reported an error of its own (not one of the
+ * statements in its body: a loop or an include whose body has an error still runs the
+ * rest of its body) or uses what failed. */
+void check_statement(struct checker *c, struct ast *s)
+{
+	int before = c->diag->errors, nested_before = c->nested_errors;
+	bool tainted = c->tainted;
+	c->tainted = false;
+	check_parts(c, s);
+	int own = c->diag->errors - before - (c->nested_errors - nested_before);
+	s->failed = own > 0 || c->tainted;
+	struct binding *b = binding_of(s);
+	if (b)
+		b->failed = s->failed;
+	c->tainted = tainted;
+	c->nested_errors = nested_before + (c->diag->errors - before);
 }
 
 static void check_stmts(struct checker *c, struct ast_list *stmts)

@@ -21,6 +21,7 @@ struct binding {
 	unsigned slot;             /* where eval.c keeps its current value */
 	unsigned scope;
 	bool used;
+	bool failed;               /* its definition had an error (ast.failed): what uses it is skipped */
 	struct binding *shadowed;  /* the outer binding of the same name that this one hides */
 	struct binding *scope_next;
 	struct name_entry *entry;

@@ -118,9 +118,11 @@ static void check_material_ref(struct checker *c, struct ast *id)
 	if (b && b->kind == BIND_MATERIAL) {
 		b->used = true;
 		id->u.ident.ref = b;
+		c->tainted |= b->failed;
 		id->type = TYPE_MATERIAL;
 		return;
 	}
+	c->tainted = true; /* also when unknown_name says nothing (a name an unread include may define) */
 	if (b) {
 		diag_error(c->diag, id->span, "'%s' is not a material", name);
 		return;
@@ -153,8 +155,10 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 	const char *name = item_name(item);
 	struct span at = item->u.item.name_span;
 	for (size_t i = 0; i < args->n; i++)
-		if (args->v[i]->kind == AST_ERROR) /* reported where it is; its shape would be a guess */
+		if (args->v[i]->kind == AST_ERROR) { /* reported where it is; its shape would be a guess */
+			c->tainted = true;
 			return;
+		}
 
 	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL) {
 		diag_error(c->diag, item->u.item.block->open, "'%s' takes a value, not a block", name);

@@ -86,6 +86,7 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 	if (b) {
 		b->used = true;
 		e->u.ident.ref = b;
+		c->tainted |= b->failed;
 		if (b->kind == BIND_MATERIAL) {
 			diag_error(c->diag, e->span, "'%s' is a material, not a value", name);
 			return TYPE_NONE;
@@ -102,6 +103,7 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 		return TYPE_NONE;
 	}
 	unknown_name(c, e->span, name, false);
+	c->tainted = true; /* also when unknown_name says nothing (a name an unread include may define) */
 	return TYPE_NONE;
 }
 
@@ -161,7 +163,8 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		return TYPE_NUM;
 	case AST_STR:
 		return TYPE_STR;
-	case AST_ERROR:
+	case AST_ERROR:                /* a syntax error, reported where it is */
+		c->tainted = true;
 		return TYPE_NONE;
 	case AST_IDENT:
 		return check_ident(c, e);

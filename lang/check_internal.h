@@ -38,6 +38,10 @@ struct checker {
 	struct ast_list *root;     /* the scene file's statements, to find definitions that come late, or NULL */
 	const char *defining;      /* the material whose block is being checked, or NULL */
 	bool include_failed;       /* an include could not be read: its names are unknown, not wrong */
+	/* for ast.failed: the statement being checked uses a failed name or holds a syntax
+	 * error; the errors reported inside the statements nested in it, which are theirs */
+	bool tainted;
+	int nested_errors;
 };
 
 enum shape {

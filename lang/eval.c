@@ -751,6 +751,8 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 
 static void eval_stmt(struct evaluator *ev, struct ast *s)
 {
+	if (s->failed)                 /* its error is reported; what it would give is unknown */
+		return;
 	switch (s->kind) {
 	case AST_LET: {
 		unsigned slot = s->u.let.b->slot;

@@ -27,7 +27,10 @@ static void load_in_phases(struct diag *d, const struct source *src, struct scen
 	unsigned nslots = check_file(a, d, src, &stmts); /* parses included files too */
 	double t2 = clock_now();
 	t->check += t2 - t1;
-	if (d->errors == 0)
+	/* the statements that checked clean are evaluated even after an error elsewhere, for
+	 * their value errors (check.c marks the others failed); once the errors have reached
+	 * the limit nothing more would print */
+	if (!diag_stopped(d))
 		eval_file(d, &stmts, nslots, out);
 	t->eval += clock_now() - t2;
 	arena_free(a);

@@ -212,3 +212,5 @@ EXTRA_DIST += tests/errors/lex_number_consequence.scn tests/errors/lex_number_co
 # a scene loaded one statement at a time until its first message, then again in phases
 TESTS += tests/errors/late_error.scn
 EXTRA_DIST += tests/errors/late_error.scn tests/errors/late_error.err
+TESTS += tests/errors/every_error.scn
+EXTRA_DIST += tests/errors/every_error.scn tests/errors/every_error.err
