@@ -27,7 +27,17 @@ struct lang_ctx {
 	uint32_t read_pos;            /* local offset of what YY_INPUT has handed the scanner */
 	unsigned nopen;               /* open brackets, innermost last */
 	unsigned nopen_of[3];         /* how many of them are '{', '(' and '<' */
-	struct { struct span sp; char ch; } open[LANG_MAX_NESTING];
+	struct {
+		struct span sp;
+		uint32_t indent;      /* of the line it is on */
+		char ch;
+	} open[LANG_MAX_NESTING];
+	uint32_t indent;              /* bytes of blank before the first token of the current line */
+	/* A '}' that starts its line indented less than the line of the '{' it closed, and
+	 * as much as the line of the '{' around that (meant): if that outer '{' is left open
+	 * at the end, the '}' was most likely meant for it, and the inner '{' is the one not
+	 * closed. Later closers shifted by the same missing '}' move outer outwards. */
+	struct { bool seen; struct span inner, closer, meant, outer; } misfit;
 };
 
 /* Parses src into its statements, their nodes allocated in nodes and the text of their

@@ -15,6 +15,7 @@ struct lang_ctx;
 }
 
 %code {
+#include <ctype.h>
 #include <math.h>
 #include <string.h>
 
@@ -314,6 +315,51 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 
 /* "unexpected 'x'; expected A, B or C", and a note at the bracket left open when the
  * parser wanted its closer. A BAD token was reported by the lexer already. */
+/* POV-Ray's light_source { <0, 5, 0> ... } as scn's light { <0, 5, 0> }: the hint, in buf,
+ * for the vector at vec that opens the block at brace. */
+static void light_position_hint(const struct lang_ctx *ctx, struct span brace, struct span vec, char *buf, size_t size)
+{
+	const char *text = ctx->src->text;
+	uint32_t open = brace.start - ctx->src->base, at = vec.start - ctx->src->base;
+	uint32_t i = open;
+	while (i > 0 && strchr(" \t\r\n", text[i - 1]))
+		i--;
+	uint32_t word = i;
+	while (word > 0 && (isalnum((unsigned char)text[word - 1]) || text[word - 1] == '_'))
+		word--;
+	bool first = true;
+	for (uint32_t j = open + 1; j < at; j++)
+		first &= strchr(" \t\r\n", text[j]) != NULL;
+	if (!first || i - word != 5 || memcmp(text + word, "light", 5) != 0)
+		return;
+	uint32_t end = at;
+	while (end < ctx->src->len && end - at < 60 && text[end] != '>' && text[end] >= ' ' && text[end] < 0x7f)
+		end++;
+	if (end < ctx->src->len && text[end] == '>')
+		snprintf(buf, size, " (POV-Ray's light_source starts with its position; scn writes position %.*s)",
+		         (int)(end + 1 - at), text + at);
+	else
+		snprintf(buf, size, " (POV-Ray's light_source starts with its position; scn writes position <x, y, z>)");
+}
+
+/* The note on the bracket left open, open[k]; for a '{', the innermost one by the
+ * indentation when a '}' indented for it closed a '{' inside it instead (lang_ctx.misfit),
+ * as that is where a '}' is missing, however far from the end. */
+static void note_unclosed(struct lang_ctx *ctx, unsigned k)
+{
+	char open = ctx->open[k].ch;
+	if (open != '{' || !ctx->misfit.seen || ctx->misfit.outer.start != ctx->open[k].sp.start) {
+		diag_note(ctx->diag, ctx->open[k].sp, "to match this '%c'", open);
+		return;
+	}
+	unsigned inner_line, outer_line, col;
+	diag_line_col(ctx->diag, ctx->misfit.inner.start, &inner_line, &col);
+	diag_line_col(ctx->diag, ctx->misfit.meant.start, &outer_line, &col);
+	diag_note(ctx->diag, ctx->misfit.inner, "to match this '{'");
+	diag_note(ctx->diag, ctx->misfit.closer, "this '}', indented as line %u is, was read as closing line %u's '{'",
+	          outer_line, inner_line);
+}
+
 static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struct lang_ctx *ctx)
 {
 	(void)scanner;
@@ -369,14 +415,18 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 			used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
 			                         i == 0 ? "; expected " : i == m - 1 ? " or " : ", ", names[i]);
 	}
-	diag_error(ctx->diag, at, "unexpected %s%s", what, list);
-
-	/* The note names the innermost bracket open before the error, when its closer was
-	 * expected and what came instead looks like what follows a missing closer: the end,
-	 * a statement, another closer. (The lexer has already pushed an unexpected opener.) */
+	/* The innermost bracket open before the error. (The lexer has already pushed an
+	 * unexpected opener.) */
 	unsigned k = ctx->nopen;
 	while (k > 0 && ctx->open[k - 1].sp.start >= at.start)
 		k--;
+	char hint[160] = "";
+	if (k > 0 && strcmp(yysymbol_name(got), "'<'") == 0)
+		light_position_hint(ctx, ctx->open[k - 1].sp, at, hint, sizeof hint);
+	diag_error(ctx->diag, at, "unexpected %s%s%s", what, list, hint);
+
+	/* The note names that bracket when its closer was expected and what came instead
+	 * looks like what follows a missing closer: the end, a statement, another closer. */
 	const char *got_name = yysymbol_name(got);
 	bool missing = got == YYSYMBOL_YYEOF || got == YYSYMBOL_LET || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR
 	            || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_MESH
@@ -387,7 +437,7 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 		char closer[4] = { '\'', open == '{' ? '}' : open == '(' ? ')' : '>', '\'', '\0' };
 		for (int i = 0; i < n; i++)
 			if (strcmp(yysymbol_name(expected[i]), closer) == 0) {
-				diag_note(ctx->diag, ctx->open[k - 1].sp, "to match this '%c'", open);
+				note_unclosed(ctx, k - 1);
 				break;
 			}
 	}

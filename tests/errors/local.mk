@@ -214,3 +214,7 @@ TESTS += tests/errors/late_error.scn
 EXTRA_DIST += tests/errors/late_error.scn tests/errors/late_error.err
 TESTS += tests/errors/every_error.scn
 EXTRA_DIST += tests/errors/every_error.scn tests/errors/every_error.err
+TESTS += tests/errors/syntax_unclosed_indented.scn
+EXTRA_DIST += tests/errors/syntax_unclosed_indented.scn tests/errors/syntax_unclosed_indented.err
+TESTS += tests/errors/pov_light_position.scn
+EXTRA_DIST += tests/errors/pov_light_position.scn tests/errors/pov_light_position.err

@@ -16,7 +16,7 @@ expect_flood() {
 }
 
 expect_flood lex '@'
-expect_flood lex_byte '\x01'
+expect_flood lex_utf8 '\u00e9'
 expect_flood syntax 'sphere { <0,0,0> 1 }'
 expect_flood name 'sphere { <zz,0,0>, 1 }'
 expect_flood type 'sphere { "s", 1 }'
