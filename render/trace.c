@@ -88,9 +88,11 @@ static bool any_positive(struct vec3 v)
 	return v.x > 0 || v.y > 0 || v.z > 0;
 }
 
-/* Direct light at sp from every light, seen along v with facing normal n. */
-static struct vec3 direct_light(const struct scene *sc, const struct surface_point *sp, struct vec3 n,
-                                struct vec3 v, struct vec3 kd, const struct material *m, struct ray_stats *st)
+/* Direct light at sp from every light, seen along v with facing normal n; the shadow rays
+ * start from shadow_from (shape_shadow_point). */
+static struct vec3 direct_light(const struct scene *sc, const struct surface_point *sp,
+                                const struct surface_point *shadow_from, struct vec3 n, struct vec3 v, struct vec3 kd,
+                                const struct material *m, struct ray_stats *st)
 {
 	struct vec3 sum = v3s(0);
 	for (size_t i = 0; i < sc->nlights; i++) {
@@ -113,7 +115,7 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 		if (!li->shadowless) {
 			/* a segment from just off the surface to the light: relative end, so the
 			 * light itself needs no tolerance (NUMERICS.md section 3) */
-			struct ray shadow = { ray_offset_origin(sp, l), l };
+			struct ray shadow = { ray_offset_origin(shadow_from, l), l };
 			double tmax = INFINITY;
 			if (li->kind == LIGHT_POINT) {
 				struct vec3 to = vsub(li->pos, shadow.o);
@@ -152,11 +154,15 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 	/* the shading normal turned towards the viewer; inside or outside from the
 	 * geometric normal */
 	bool entering = vdot(r->d, sp.ng) < 0;
-	struct vec3 n = vdot(sp.ns, r->d) > 0 ? vneg(sp.ns) : sp.ns;
+	bool back = vdot(sp.ns, r->d) > 0;
+	struct vec3 n = back ? vneg(sp.ns) : sp.ns;
 	struct vec3 v = vneg(r->d);
 	struct vec3 color = m->emit;
-	if (sc->nlights)
-		color = vadd(color, direct_light(sc, &sp, n, v, diffuse_at(sc, srf, m, sp.p), m, st));
+	if (sc->nlights) {
+		struct surface_point shadow_from = sp;
+		shape_shadow_point(&sc->geo, &h, back ? -1 : 1, &shadow_from);
+		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, diffuse_at(sc, srf, m, sp.p), m, st));
+	}
 	if (depth >= sc->max_depth)
 		return color;
 

@@ -27,6 +27,15 @@ void shape_surface_at(const struct geometry *g, const struct ray *r, const struc
 	}
 }
 
+void shape_shadow_point(const struct geometry *g, const struct hit *h, double side, struct surface_point *sp)
+{
+	if (shape_kind(h->prim) != SHAPE_TRIANGLE)
+		return;
+	const struct triangle *tri = &g->triangles[shape_index(h->prim)];
+	if (tri->n[0] != TRIANGLE_FLAT)
+		triangle_lift(tri, g->vertices, g->normals, h, side, sp);
+}
+
 bool shape_planes_intersect(const struct geometry *g, const struct ray *r, struct hit *h)
 {
 	bool hit = false;

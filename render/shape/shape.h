@@ -81,6 +81,10 @@ struct vec3 shape_planes_filter(const struct geometry *g, const struct ray *r, d
 
 /* The surface where r hits h->prim at h->t. */
 void shape_surface_at(const struct geometry *g, const struct ray *r, const struct hit *h, struct surface_point *sp);
+/* Where shadow rays from sp, the surface at hit h, start: sp itself, but on a smooth
+ * triangle lifted to the curved surface its shading normals describe (triangle_lift);
+ * side is 1 when the rays leave by the side the shading normal points to, -1 if not. */
+void shape_shadow_point(const struct geometry *g, const struct hit *h, double side, struct surface_point *sp);
 
 /* What a primitive is made of: its index in g->surfaces. */
 static inline uint32_t shape_surface(const struct geometry *g, uint32_t id)

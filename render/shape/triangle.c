@@ -143,3 +143,27 @@ void triangle_surface(const struct triangle *tri, const struct vec3 *vertices, c
 		sp->ns = len > 0 ? vscale(n, 1 / len) : sp->ng;
 	}
 }
+
+void triangle_lift(const struct triangle *tri, const struct vec3 *vertices, const struct vec3 *normals,
+                   const struct hit *h, double side, struct surface_point *sp)
+{
+	const double b[3] = { 1 - h->b1 - h->b2, h->b1, h->b2 };
+	struct vec3 lift = v3s(0), lift_err = v3s(0);
+	bool below = false;
+	for (int k = 0; k < 3; k++) {
+		struct vec3 n = vscale(normals[tri->n[k]], side), to = vsub(sp->p, vertices[tri->v[k]]);
+		double d = vdot(to, n);
+		if (!(d < 0))
+			continue;
+		below = true;
+		lift = vmad(lift, -b[k] * d, n);
+		/* the error of d: of the difference and the dot product, and p's own */
+		double d_err = rounding_gamma(5) * vdot(vabs(to), vabs(n)) + vdot(sp->p_err, vabs(n));
+		lift_err = vmad(lift_err, b[k] * d_err, vabs(n));
+	}
+	if (!below)
+		return;
+	sp->p = vadd(sp->p, lift);
+	sp->p_err = vadd(vadd(sp->p_err, lift_err), vadd(vscale(vabs(lift), rounding_gamma(4)),
+	                                                  vscale(vabs(sp->p), rounding_gamma(1))));
+}

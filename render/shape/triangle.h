@@ -68,5 +68,13 @@ void triangle_bounds(const struct triangle *tri, const struct vec3 *vertices, st
  * interpolated from normals[] unless tri is flat. */
 void triangle_surface(const struct triangle *tri, const struct vec3 *vertices, const struct vec3 *normals,
                       const struct hit *h, struct surface_point *sp);
+/* Moves sp->p, the hit h of the smooth tri, onto the curved surface its vertex normals
+ * describe, as the start of shadow rays (Hanika, "Hacking the shadow terminator", Ray
+ * Tracing Gems II, ch. 4): the barycentric blend of the point's projections onto the
+ * tangent planes of the three vertices, each only where the point lies below that plane.
+ * side (1 or -1) turns the normals to the side the rays leave by. Leaves sp alone where
+ * no plane is above it, so that flat-looking regions start where they did. */
+void triangle_lift(const struct triangle *tri, const struct vec3 *vertices, const struct vec3 *normals,
+                   const struct hit *h, double side, struct surface_point *sp);
 
 #endif

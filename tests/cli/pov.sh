@@ -59,7 +59,7 @@ sphere { <1.6, 0.6, -0.8>, 0.5 material air }
 sphere { <0, 0, 0>, 0.4 material chk rotate <20, 30, 0> translate <-0.3, 0.5, -1.6> }
 plane { <0, 1, 0>, -0.01 material { diffuse checker(<0.7, 0.7, 0.7>, <0.2, 0.2, 0.3>, 1) } }
 mesh { vertices { <1.2, 0.1, 1.5>, <2.4, 0.1, 1.8>, <1.8, 1.5, 1.6>, <2.6, 1.3, 2.4> } faces { <0, 2, 1>, <1, 2, 3> }
-       normals { <-0.4, 0.2, -1>, <0.5, 0.2, -1>, <0, 0.6, -1>, <0.8, 0.4, -0.6> } smooth
+       normals { <-0.1, 0.05, -1>, <0.12, 0.05, -1>, <0, 0.15, -1>, <0.2, 0.1, -0.9> } smooth
        material { diffuse <0.8, 0.6, 0.2> specular 0.3 shininess 20 } }
 triangle { <-2.5, 0.05, 2>, <-1, 0.05, 2.5>, <-1.8, 1.6, 2.2> material { diffuse <0.2, 0.3, 0.8> } }
 EOF
@@ -156,7 +156,9 @@ povray_run() {
 	[ "$cmd" != " $*" ] || { fail "$pov has no // Render: line"; return 1; }
 	(cd "$(dirname "$pov")" && HOME=$work sh -c "$cmd -GA +WT2" >/dev/null 2>&1) || { fail "'$cmd' exited $?"; return 1; }
 }
-# the features scene, raised off the floor everywhere (touching surfaces differ by design);
+# the features scene, raised off the floor everywhere (touching surfaces differ by design),
+# its smooth mesh's normals tilted little: scn starts shadow rays on the curved surface they
+# describe, POV-Ray on the flat one, which moves the edge of a shadow across the mesh;
 # both images clip at 1 (its highlights are brighter), and scn's 16-bit sRGB PNG is within
 # 1.2/65535 of the linear value, POV-Ray's linear PNG within 0.5/65535
 if povray_run features.pov; then
@@ -166,8 +168,10 @@ if povray_run features.pov; then
 		{ fail "POV-Ray's render of features.pov differs from scn's"; cat diff.out; }
 fi
 # grid sampling: POV-Ray at twice the size, averaged in 2 x 2 blocks; with dimmer lights, as
-# POV-Ray clips each of its pixels at 1 before they are averaged, scn only the mean
-sed 's/color <1, 0.9, 0.8>/color <0.6, 0.5, 0.4>/' grid.scn >grid2.scn
+# POV-Ray clips each of its pixels at 1 before they are averaged, scn only the mean; the
+# mesh flat, as at twice the size a shadow's edge crosses it where the lifted start of
+# scn's shadow rays (see above) moves it
+sed 's/color <1, 0.9, 0.8>/color <0.6, 0.5, 0.4>/; s/ smooth$//' grid.scn >grid2.scn
 expect_status 0 "$SCN" pov grid2.scn
 if povray_run grid2.pov; then
 	"$SCN" render grid2.scn -o grid2-scn.exr --float -q || fail "scn render grid2.scn exited $?"

@@ -1,11 +1,12 @@
 # tests/extreme/local.mk: stiff and extreme scenes (issue 5): world offsets and scales,
 # tiny and far spheres, huge ground spheres, lights on and in objects, grazing light and
 # view, rays along shared mesh edges and BVH slab planes, camera extremes, deep mirrors,
-# total internal reflection, and non-finite or degenerate input. Each NAME.scn has the
-# property NAME.expect states (an analytic mask, or equality with a well-conditioned
-# twin), or is refused as NAME.err says; tests/extreme/run-extreme checks it, and every
-# render must count 0 non-finite radiance values. tests/extreme/compare-pov checks the
-# same properties on POV-Ray's renders (not part of make check).
+# total internal reflection, the shadow terminator of a smooth low-poly mesh, and
+# non-finite or degenerate input. Each NAME.scn has the property NAME.expect states (an
+# analytic mask, or equality with a well-conditioned twin), or is refused as NAME.err
+# says; tests/extreme/run-extreme checks it, and every render must count 0 non-finite
+# radiance values. tests/extreme/compare-pov checks the same properties on POV-Ray's
+# renders (not part of make check).
 EXTREME_TESTS = \
 	tests/extreme/axis_rays_neg.scn \
 	tests/extreme/axis_rays_pos.scn \
@@ -54,6 +55,7 @@ EXTREME_TESTS = \
 	tests/extreme/scale_3e-6.scn \
 	tests/extreme/scale_7e7.scn \
 	tests/extreme/subnormal_dirs.scn \
+	tests/extreme/terminator.scn \
 	tests/extreme/tiny_radius.scn \
 	tests/extreme/tiny_sphere_2e-6.scn \
 	tests/extreme/tiny_sphere_5e-6.scn
@@ -101,6 +103,7 @@ EXTREME_EXPECT = \
 	tests/extreme/scale_3e-6.expect \
 	tests/extreme/scale_7e7.expect \
 	tests/extreme/subnormal_dirs.expect \
+	tests/extreme/terminator.expect \
 	tests/extreme/tiny_radius.expect \
 	tests/extreme/tiny_sphere_2e-6.expect \
 	tests/extreme/tiny_sphere_5e-6.expect
@@ -110,6 +113,7 @@ EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
 	tests/extreme/run-extreme tests/extreme/compare-pov tests/extreme/accel-grid.sh \
 	tests/extreme/world.inc tests/extreme/ground.inc tests/extreme/dark.inc tests/extreme/grazing.inc \
 	tests/extreme/axis_grid.inc tests/extreme/subnormal_dirs.inc \
+	tests/extreme/terminator.inc tests/extreme/icosphere.inc tests/extreme/terminator_twin.scn \
 	tests/extreme/grazing_sphere_twin.scn \
 	tests/extreme/ground_plane.scn \
 	tests/extreme/no_light.scn \

@@ -11,6 +11,10 @@
  *   twin FILE.scn TOL N     the image has the size of TWIN (the render of FILE.scn,
  *                           made by the caller) and at most N of its pixels differ from
  *                           TWIN's by more than TOL in some channel
+ *   darker FILE.scn X0 Y0 X1 Y1 LEVEL RATIO N
+ *                           of the pixels of the rectangle where TWIN exceeds LEVEL in
+ *                           every channel, at most N are below RATIO times TWIN's value
+ *                           in some channel
  * Text after a check's numbers is a label for people (tests/extreme/compare-pov shows it).
  * Usage: probe IMAGE STATS EXPECT [TWIN]. Prints every mismatch; exits 1 on any. */
 #include <inttypes.h>
@@ -87,6 +91,30 @@ static long long count_off(const struct image *a, const struct image *b, double 
 			       i / (size_t)a->width, a->rgb[3 * i], a->rgb[3 * i + 1], a->rgb[3 * i + 2], want[0], want[1],
 			       want[2]);
 	}
+	return n;
+}
+
+/* The pixels of a in the rectangle [x0, x1) x [y0, y1) of r below ratio times b's in some
+ * channel, of those where b exceeds level in every channel, printing the first few; -1
+ * when the sizes differ. */
+static long long count_darker(const struct image *a, const struct image *b, const double r[4], double level,
+                              double ratio)
+{
+	if (a->width != b->width || a->height != b->height)
+		return -1;
+	long long n = 0;
+	for (int y = r[1] < 0 ? 0 : (int)r[1]; y < a->height && y < r[3]; y++)
+		for (int x = r[0] < 0 ? 0 : (int)r[0]; x < a->width && x < r[2]; x++) {
+			size_t i = (size_t)y * (size_t)a->width + (size_t)x;
+			const float *p = &a->rgb[3 * i], *q = &b->rgb[3 * i];
+			if (!(q[0] > level && q[1] > level && q[2] > level))
+				continue;
+			if (p[0] >= ratio * q[0] && p[1] >= ratio * q[1] && p[2] >= ratio * q[2])
+				continue;
+			if (n++ < 5)
+				printf("  pixel %d %d = %.6f %.6f %.6f, twin %.6f %.6f %.6f\n", x, y, p[0], p[1], p[2], q[0],
+				       q[1], q[2]);
+		}
 	return n;
 }
 
@@ -174,6 +202,14 @@ int main(int argc, char **argv)
 			if (got < 0 || got > n) {
 				printf("FAIL: line %d: %lld pixels differ from %s's by more than %g, expected at most %lld\n",
 				       lineno, got, file, v[0], n);
+				failures++;
+			}
+		} else if (sscanf(line, "darker %255s %lf %lf %lf %lf %lf %lf %lld", file, &v[0], &v[1], &v[2], &v[3], &v[4],
+		                  &v[5], &n) == 8) {
+			long long got = twin ? count_darker(img, twin, v, v[4], v[5]) : -1;
+			if (got < 0 || got > n) {
+				printf("FAIL: line %d: %lld pixels of %g %g %g %g where %s's exceed %g are below %g of it, "
+				       "expected at most %lld\n", lineno, got, v[0], v[1], v[2], v[3], file, v[4], v[5], n);
 				failures++;
 			}
 		} else {
