@@ -243,6 +243,18 @@ static double adaptive_target(int step)
 	return ADAPTIVE_FIRST / (1 << step);
 }
 
+/* The adaptive series' largest count at a step: halving the target takes four times the
+ * samples where noise is left, so the cap grows with it from the fixed series' largest,
+ * up to the 16 times that the reference takes (a cap held fixed made every target below
+ * its reach give the same image). */
+static int adaptive_cap(const struct run *r, int step)
+{
+	long cap = r->max_count;
+	for (int i = 0; i < step && cap < 16L * r->max_count; i++)
+		cap *= 4;
+	return (int)(cap < 65536 ? cap : 65536);
+}
+
 /* POV-Ray's anti-aliasing at step 0 (-A) and at +AM2 depth d = step. */
 static void pov_setting(int step, char *buf, size_t n)
 {
@@ -258,7 +270,7 @@ static double nominal_cost(const struct run *r, const struct series *s, int step
 {
 	switch (s->kind) {
 	case SERIES_FIXED: return fixed_count(step);
-	case SERIES_ADAPTIVE: return r->max_count;
+	case SERIES_ADAPTIVE: return adaptive_cap(r, step);
 	default: return step == 0 ? 1 : (double)(1 << (2 * (step - 1)));
 	}
 }
@@ -291,7 +303,7 @@ static int run_scn_step(struct run *r, int si)
 	if (s->kind == SERIES_FIXED)
 		smp.count = fixed_count(step);
 	else
-		smp.count = r->max_count, smp.target_error = adaptive_target(step);
+		smp.count = adaptive_cap(r, step), smp.target_error = adaptive_target(step);
 	double seconds;
 	struct ray_stats st;
 	int rc = render_with(r, smp, &seconds, &st);

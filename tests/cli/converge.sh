@@ -36,6 +36,11 @@ for pattern in random jittered poisson grid; do
 	grep -q "^scn $pattern  *count 64 " table.txt && fail "scn $pattern went past a 16th of the reference's count"
 done
 expect_grep table.txt "^scn adaptive +target 0\.02 max 16 +$num +[0-9]+\.[0-9]{3} +$num +$num\$"
+# the adaptive cap follows the target (four times the samples for half the target) up to the
+# reference's count, and the samples taken rise with it
+expect_grep table.txt "^scn adaptive +target 0\.01 max 64 "
+expect_grep table.txt "^scn adaptive +target 0\.005 max 256 "
+expect_grep table.txt "^scn adaptive +target 0\.0025 max 256 "
 grep -q '^POV-Ray ' table.txt && fail "--no-pov ran POV-Ray"
 [ "$(tail -n 1 table.txt)" = "at equal error: no POV-Ray series to compare with (--no-pov)" ] ||
 	fail "the last line is '$(tail -n 1 table.txt)'"
@@ -50,6 +55,9 @@ rows=$(grep -cE '^scn [a-z]+ ' table.txt)
 # the error falls as the jittered samples rise
 awk -F, '$1 == "scn jittered" { if (n++ && $5 >= last) bad = 1; last = $5 } END { exit bad || n < 3 }' t.csv ||
 	{ fail "the jittered RMSE does not fall with the count"; grep jittered t.csv; }
+awk -F, '$1 == "scn adaptive" { if (n++ && ($3 <= spp || $6 >= est)) bad = 1; spp = $3; est = $6 }
+	END { exit bad || n < 4 }' t.csv ||
+	{ fail "the adaptive series' samples do not rise, or its estimated error fall, as the target falls"; grep adaptive t.csv; }
 # the renders of the random patterns estimate their error (not 0), grid's do not
 awk -F, 'NR > 1 && ($1 == "scn grid" ? $6 != "" : !($6 > 0)) { bad = 1 } END { exit bad }' t.csv ||
 	{ fail "an estimated RMSE is missing or 0, or grid has one"; cat t.csv; }
