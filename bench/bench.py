@@ -7,6 +7,7 @@ accelerator. The Embree table: bench/embree_compare. Scenes and meshes are gener
 work folder (default /tmp/scn-bench), never committed."""
 
 import argparse
+import math
 import os
 import re
 import shlex
@@ -65,13 +66,37 @@ def scn_render(scene, out, accel="bvh"):
     return {"wall": wall, "mb": mb, **scn_stats(err)}
 
 
-def pov_command(pov):
-    """The povray command line at the top of a .pov that scn pov wrote, with +WT2."""
+def pov_command(pov, spp):
+    """The povray command line at the top of a .pov that scn pov wrote, with +WT2, its
+    anti-aliasing set to trace as many camera rays a pixel as scn's spp do."""
     with open(pov) as f:
         for line in f:
             if line.startswith("// Render: "):
-                return shlex.split(line[len("// Render: "):]) + ["+WT%d" % THREADS]
+                cmd = shlex.split(line[len("// Render: "):]) + ["+WT%d" % THREADS]
+                return equal_rays_aa(cmd, int(spp))
     sys.exit("bench: %s has no '// Render:' line" % pov)
+
+
+def equal_rays_aa(cmd, spp):
+    """cmd with scn pov's +AM2 +Rd (a lattice whose edges neighbours share: 6.06 camera rays a
+    pixel at d = 2 by POV-Ray's statistics, against scn's 5) replaced by +AM1 +Rn: the centre
+    and n x n sub-samples, n^2 + 1 rays, for scn's spp = n^2 + 1 (jitter off, as scn pov has it)."""
+    if spp <= 1:
+        return cmd
+    n = round(math.sqrt(spp - 1))
+    if n * n + 1 != spp:
+        sys.exit("bench: %d samples per pixel is not n^2 + 1; POV-Ray's +AM1 cannot trace as many" % spp)
+    out = [a for a in cmd if not re.match(r"^(\+A[0-9.]*|\+AM\d|\+R\d+|-J)$", a)]
+    return out[:2] + ["+A0.0", "+AM1", "+R%d" % n, "-J"] + out[2:]
+
+
+POV_STATS = re.compile(r"^Pixels: +(\d+) +Samples: +(\d+)", re.M)
+
+
+def pov_camera_rays(text):
+    """POV-Ray's camera rays from its statistics: its pixels and its anti-aliasing samples."""
+    m = POV_STATS.search(text)
+    return int(m.group(1)) + int(m.group(2)) if m else float("nan")
 
 
 def median_run(runs):
@@ -123,16 +148,17 @@ def scene_table(work, runs, table_scenes):
         scene = os.path.join(work, file)
         pov = os.path.join(work, file[:-4] + ".pov")
         subprocess.run([SCN, "pov", scene, "-o", pov], check=True, stderr=subprocess.DEVNULL)
-        cmd = pov_command(pov)
+        settings = scene_settings(scene)
+        cmd = pov_command(pov, settings[1])
         s_runs, p_runs = [], []
         for i in range(runs):
             log("bench: %s: run %d of %d: scn, then POV-Ray" % (name, i + 1, runs))
             s_runs.append(scn_render(scene, os.path.join(work, file[:-4] + "-scn.png")))
-            wall, mb, _ = timed(cmd, cwd=work)
-            p_runs.append({"wall": wall, "mb": mb})
+            wall, mb, err = timed(cmd, cwd=work)
+            p_runs.append({"wall": wall, "mb": mb, "camera": pov_camera_rays(err)})
         s_med = median_run(s_runs)
         s_med["rmse"] = image_rmse(os.path.join(work, file[:-4] + "-scn.png"), os.path.join(work, file[:-4] + "-pov.png"))
-        rows.append((name, what, scene_settings(scene), s_med, median_run(p_runs),
+        rows.append((name, what, settings, s_med, median_run(p_runs),
                      max(r["mb"] for r in s_runs), max(r["mb"] for r in p_runs), cmd))
     return rows
 
@@ -140,22 +166,24 @@ def scene_table(work, runs, table_scenes):
 def print_scene_table(rows, runs):
     print("scn against POV-Ray 3.7: wall time, median of %d alternating runs (scn, POV-Ray, scn, ...); "
           "scn -j %d, POV-Ray +WT%d;" % (runs, THREADS, THREADS))
-    print("same resolution, samples per pixel and max_depth (scn pov writes both). scn's samples are jittered "
-          "(5 spp headline, 4 bunny);")
-    print("POV-Ray cannot place them, and scn pov maps both counts to its nearest, +A0.0 +AM2 +R2 -J: a 3x3 "
-          "lattice per pixel whose")
-    print("edge samples neighbouring pixels share (about 4 new samples per pixel). 1 spp scenes: one ray "
-          "through each pixel centre in both.")
+    print("same resolution, camera rays per pixel and max_depth (scn pov writes the scene). scn's 5 samples "
+          "a pixel are jittered;")
+    print("POV-Ray cannot place them and traces +A0.0 +AM1 +R2 -J instead: the centre and a 2x2 grid, 5 rays. "
+          "1 spp scenes: one ray")
+    print("through each pixel centre in both. rays/px: camera rays per pixel as each counts them (scn --stats; "
+          "POV-Ray's Pixels + Samples).")
     print()
-    head = ("%-12s %-10s %3s %5s | %7s %7s %7s | %7s %7s | %6s %6s %7s | %6s" %
-            ("scene", "size", "spp", "depth", "scn s", "pov s", "pov/scn", "scn MB", "pov MB", "load", "build",
-             "render", "RMSE"))
+    head = ("%-12s %-10s %3s %5s | %6s %6s | %7s %7s %7s | %7s %7s | %6s %6s %7s | %6s" %
+            ("scene", "size", "spp", "depth", "scn", "pov", "scn s", "pov s", "pov/scn", "scn MB", "pov MB", "load",
+             "build", "render", "RMSE"))
+    print("%-12s %-10s %3s %5s | %13s |" % ("", "", "", "", "rays/px"))
     print(head)
     print("-" * len(head))
     for name, what, (size, spp, depth), s, p, smb, pmb, _ in rows:
-        print("%-12s %-10s %3s %5s | %7.2f %7.2f %6.1fx | %7.0f %7.0f | %6.2f %6.2f %7.2f | %6.4f" %
-              (name, size, spp, depth, s["wall"], p["wall"], p["wall"] / s["wall"], smb, pmb, s["load"],
-               s["build"], s["render"], s["rmse"]))
+        npix = math.prod(int(x) for x in size.split("x"))
+        print("%-12s %-10s %3s %5s | %6.2f %6.2f | %7.2f %7.2f %6.1fx | %7.0f %7.0f | %6.2f %6.2f %7.2f | %6.4f" %
+              (name, size, spp, depth, s["rays"]["camera"] / npix, p["camera"] / npix, s["wall"], p["wall"],
+               p["wall"] / s["wall"], smb, pmb, s["load"], s["build"], s["render"], s["rmse"]))
     print()
     print("pov/scn: how many times faster scn is. MB: peak resident memory. load (parse, evaluate, read meshes), "
           "build (BVH)")
