@@ -8,9 +8,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "diag.h"
 #include "memory.h"
+#include "pov_hint.h"
 #include "suggest.h"
 #include "xalloc.h"
 
@@ -132,16 +134,37 @@ int cli_next_option(struct cli_parser *p)
 	return i;
 }
 
+/* The usage error for an operand that starts with '+' and names no file: POV-Ray's
+ * options start so, and without this one is taken for a second scene. */
+static int pov_option(const struct cli_parser *p, const char *arg)
+{
+	char buf[160];
+	const char *hint = pov_hint(arg, p->opts, p->nopts, buf, sizeof buf);
+	if (hint)
+		return cli_usage_error(p->cmd, "'%s' looks like a POV-Ray option; scn %s's equivalent is %s", arg,
+		                       p->cmd->name, hint);
+	return cli_usage_error(p->cmd, "'%s' looks like a POV-Ray option, and POV-Ray's options are not scn's; see "
+	                       "'scn help %s'", arg, p->cmd->name);
+}
+
 char **cli_operands(struct cli_parser *p, int *n)
 {
 	*n = p->argc - optind;
-	return p->argv + optind;
+	char **ops = p->argv + optind;
+	for (int k = 0; k < *n; k++)
+		if (ops[k][0] == '+' && access(ops[k], F_OK) != 0) {
+			pov_option(p, ops[k]);
+			return NULL;
+		}
+	return ops;
 }
 
 const char *cli_scene(struct cli_parser *p)
 {
 	int n;
 	char **ops = cli_operands(p, &n);
+	if (!ops)
+		return NULL;
 	if (n == 0)
 		cli_usage_error(p->cmd, "no scene given");
 	else if (n > 1)

@@ -55,10 +55,12 @@ void cli_parser_init(struct cli_parser *p, const struct command *cmd, const stru
  * p->name; CLI_END after the last one, or CLI_STOP once the help is shown or a usage
  * error for an unknown, ambiguous or ill-valued option is reported (p->status). */
 int cli_next_option(struct cli_parser *p);
-/* The operands after the options, *n of them, once cli_next_option returned CLI_END. */
+/* The operands after the options, *n of them, once cli_next_option returned CLI_END;
+ * NULL after a usage message for one that starts with '+' and names no file: a POV-Ray
+ * option, as +W320, with scn's equivalent when the command has one (pov_hint.h). */
 char **cli_operands(struct cli_parser *p, int *n);
 /* The one scene operand ('-' is standard input), or NULL after a usage message: no
- * scene, or more than one. */
+ * scene, more than one, or a POV-Ray option (cli_operands). */
 const char *cli_scene(struct cli_parser *p);
 /* The name of a scene's output in the current directory: its name with ext (".png"),
  * "stdin" + ext for standard input; malloc'd. */

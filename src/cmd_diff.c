@@ -125,6 +125,8 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 		return p.status;
 	int n;
 	char **paths = cli_operands(&p, &n);
+	if (!paths)
+		return EXIT_USAGE;
 	if (n > 2)
 		return cli_usage_error(self, "more than two images given ('%s')", paths[2]);
 	if (n < 2)

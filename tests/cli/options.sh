@@ -1,7 +1,7 @@
 # options.sh: the GNU conventions of every subcommand's options (--name=value, values
 # glued to short options, bundled short options, abbreviated long names, '--' to end the
-# options), and the messages for options that are unknown, ambiguous, lack a value or have
-# one they do not take.
+# options), the messages for options that are unknown, ambiguous, lack a value or have one
+# they do not take, and the hints for POV-Ray's +X options.
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
@@ -85,4 +85,46 @@ usage_error "bad value '0' for -s (a whole number in range)" render scene.scn -s
 usage_error "bad value '0' for --budget (seconds, a positive number)" converge scene.scn --budget=0
 usage_error "option '--reference' needs a value" converge scene.scn --reference
 
+# --- POV-Ray's options: an operand that starts with '+' and names no file gets the
+# equivalent option of the command, or where to look ---
+# pov_generic CMD ARG OPERANDS...
+pov_generic() {
+	cmd=$1 arg=$2
+	shift 2
+	usage_error "'$arg' looks like a POV-Ray option, and POV-Ray's options are not scn's; see 'scn help $cmd'" \
+		"$cmd" "$@" "$arg"
+}
+pov_equivalent() {
+	usage_error "'$2' looks like a POV-Ray option; scn $1's equivalent is $3" "$1" scene.scn "$2"
+}
+pov_equivalent render +W320 "-W 320"
+pov_equivalent render +H240 "-H 240"
+pov_equivalent render +w64 "-W 64"
+pov_equivalent render +W "-W WIDTH"
+pov_equivalent render +Oout.png "-o out.png"
+pov_equivalent render +A0.3 "-s SAMPLES (and -p PATTERN)"
+pov_equivalent render +AM2 "-s SAMPLES (and -p PATTERN)"
+pov_equivalent render +R3 "-s SAMPLES (and -p PATTERN)"
+pov_equivalent render +J "-p jittered"
+pov_equivalent render +WT4 "-j 4"
+pov_equivalent render +SR10 "--region X0,Y0,X1,Y1"
+pov_equivalent render +FN16 "-o OUT (.png, .exr or .ppm) and --bit-depth 8|16"
+pov_generic pov +FN16 scene.scn
+pov_equivalent render +Iscene.pov "the scene's name alone: scene.pov"
+pov_equivalent converge +W320 "-W 320"
+pov_equivalent converge +WT2 "-j 2"
+pov_equivalent pov +Ox.pov "-o x.pov"
+pov_generic render +Q9 scene.scn
+pov_generic render +D scene.scn
+pov_generic render +WL2 scene.scn
+pov_generic converge +Oout.png scene.scn
+pov_generic check +W320 scene.scn
+pov_generic diff +A0.3 a.png b.png
+# before the scene too, and before counting the scenes, and with no scene at all
+usage_error "'+W320' looks like a POV-Ray option; scn render's equivalent is -W 320" render +W320
+usage_error "'+W320' looks like a POV-Ray option; scn render's equivalent is -W 320" render +W320 scene.scn
+# a file whose name starts with '+' is a file
+cp scene.scn ./+W320
+expect_status 0 "$SCN" check +W320
+usage_error "more than one scene given ('+W320')" render scene.scn +W320
 finish
