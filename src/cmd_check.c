@@ -2,7 +2,6 @@
 #include "config.h"
 
 #include <stdio.h>
-#include <string.h>
 
 #include "cli.h"
 #include "diag.h"
@@ -10,25 +9,24 @@
 #include "lower.h"
 #include "scene_desc.h"
 
+enum { OPT_DUMP, NOPTIONS };
+static const struct cli_option options[NOPTIONS] = {
+	[OPT_DUMP] = { "dump", 0, false },
+};
+
 int cmd_check(const struct command *self, int argc, char **argv)
 {
 	bool dump = false;
-	const char *scene = NULL;
-	for (int i = 1; i < argc; i++) {
-		int taken = cli_scene_arg(self, argv[i], &scene);
-		if (taken < 0)
-			return EXIT_USAGE;
-		if (taken)
-			continue;
-		if (strcmp(argv[i], "--dump") == 0)
-			dump = true;
-		else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
-			return cli_help(self);
-		else
-			return cli_usage_error(self, "unknown option '%s' for check", argv[i]);
-	}
+	struct cli_parser p;
+	cli_parser_init(&p, self, options, NOPTIONS, argc, argv);
+	int o;
+	while ((o = cli_next_option(&p)) >= 0)
+		dump = true; /* OPT_DUMP, the only one */
+	if (o == CLI_STOP)
+		return p.status < 0 ? 0 : p.status;
+	const char *scene = cli_scene(&p);
 	if (!scene)
-		return cli_usage_error(self, "no scene given");
+		return EXIT_USAGE;
 	struct diag d;
 	diag_init(&d, stderr);
 	struct scene_desc desc;

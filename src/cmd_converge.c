@@ -105,57 +105,59 @@ static bool positive_number(const char *s, double *out)
 	return true;
 }
 
+enum {
+	OPT_REFERENCE, OPT_BUDGET, OPT_CSV, OPT_PLOT, OPT_THREADS, OPT_WIDTH, OPT_HEIGHT, OPT_REFERENCE_SAMPLES,
+	OPT_NO_POV, OPT_QUIET, NOPTIONS
+};
+static const struct cli_option options[NOPTIONS] = {
+	[OPT_REFERENCE] = { "reference", 0, true },
+	[OPT_BUDGET] = { "budget", 0, true },
+	[OPT_CSV] = { "csv", 0, true },
+	[OPT_PLOT] = { "plot", 0, true },
+	[OPT_THREADS] = { NULL, 'j', true },
+	[OPT_WIDTH] = { NULL, 'W', true },
+	[OPT_HEIGHT] = { NULL, 'H', true },
+	[OPT_REFERENCE_SAMPLES] = { "reference-samples", 0, true },
+	[OPT_NO_POV] = { "no-pov", 0, false },
+	[OPT_QUIET] = { NULL, 'q', false },
+};
+
+/* Reads the command line into *a: 0, or -1 once the help is shown, or EXIT_USAGE after a
+ * usage message. */
 static int parse_args(const struct command *self, int argc, char **argv, struct converge_args *a)
 {
 	*a = (struct converge_args){ .budget = 120, .width = -1, .height = -1 };
-	for (int i = 1; i < argc; i++) {
-		const char *opt = argv[i], *v;
-		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
-			return cli_help(self) - 1;
-		if (strcmp(opt, "--no-pov") == 0) { a->no_pov = true; continue; }
-		if (strcmp(opt, "-q") == 0) { a->quiet = true; continue; }
-		int taken = cli_scene_arg(self, opt, &a->scene);
-		if (taken < 0)
-			return EXIT_USAGE;
-		if (taken)
-			continue;
-		static const char *const valued[] = { "--reference", "--budget", "--csv", "--plot", "-j", "-W", "-H",
-		                                      "--reference-samples" };
-		bool known = false;
-		for (size_t k = 0; k < sizeof valued / sizeof *valued; k++)
-			known |= strcmp(opt, valued[k]) == 0;
-		if (!known)
-			return cli_usage_error(self, "unknown option '%s' for converge", opt);
-		if (!(v = cli_value(argc, argv, &i)))
-			return cli_usage_error(self, "option '%s' needs a value", opt);
+	struct cli_parser p;
+	cli_parser_init(&p, self, options, NOPTIONS, argc, argv);
+	int o;
+	while ((o = cli_next_option(&p)) >= 0) {
+		const char *v = p.value;
 		bool ok = true;
-		if (strcmp(opt, "--reference") == 0)
-			a->reference = v;
-		else if (strcmp(opt, "--csv") == 0)
-			a->csv = v;
-		else if (strcmp(opt, "--plot") == 0)
-			a->plot = v;
-		else if (strcmp(opt, "--budget") == 0)
-			ok = positive_number(v, &a->budget);
-		else if (strcmp(opt, "-j") == 0)
-			ok = cli_int(v, 0, 4096, &a->threads);
-		else if (strcmp(opt, "-W") == 0)
-			ok = cli_int(v, 1, 65536, &a->width);
-		else if (strcmp(opt, "-H") == 0)
-			ok = cli_int(v, 1, 65536, &a->height);
-		else {
+		switch (o) {
+		case OPT_NO_POV: a->no_pov = true; break;
+		case OPT_QUIET: a->quiet = true; break;
+		case OPT_REFERENCE: a->reference = v; break;
+		case OPT_CSV: a->csv = v; break;
+		case OPT_PLOT: a->plot = v; break;
+		case OPT_BUDGET: ok = positive_number(v, &a->budget); break;
+		case OPT_THREADS: ok = cli_int(v, 0, 4096, &a->threads); break;
+		case OPT_WIDTH: ok = cli_int(v, 1, 65536, &a->width); break;
+		case OPT_HEIGHT: ok = cli_int(v, 1, 65536, &a->height); break;
+		default: { /* OPT_REFERENCE_SAMPLES */
 			ok = cli_int(v, 16, 65536, &a->ref_samples);
 			long r = lround(sqrt((double)a->ref_samples));
 			if (ok && r * r != a->ref_samples)
 				return cli_usage_error(self, "--reference-samples needs a square count (16, 64, 256, 1024, ...), not %s", v);
 		}
+		}
 		if (!ok)
-			return cli_usage_error(self, "bad value '%s' for %s (%s)", v, opt,
-			                       strcmp(opt, "--budget") == 0 ? "seconds, a positive number"
-			                                                    : "a whole number in range");
+			return cli_usage_error(self, "bad value '%s' for %s (%s)", v, p.name,
+			                       o == OPT_BUDGET ? "seconds, a positive number" : "a whole number in range");
 	}
-	if (!a->scene)
-		return cli_usage_error(self, "no scene given");
+	if (o == CLI_STOP)
+		return p.status;
+	if (!(a->scene = cli_scene(&p)))
+		return EXIT_USAGE;
 	if (a->plot) {
 		size_t n = strlen(a->plot);
 		if (n < 4 || strcasecmp(a->plot + n - 4, ".svg") != 0)

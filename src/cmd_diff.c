@@ -67,52 +67,72 @@ static bool parse_ppm(const char *s, bool linear[2])
 	return true;
 }
 
+enum {
+	OPT_HEATMAP, OPT_DOWNSAMPLE, OPT_PPM, OPT_MAX_RMSE, OPT_MIN_PSNR, OPT_MAX_ERROR, OPT_MAX_MEAN, OPT_MAX_OFF,
+	OPT_QUIET, NOPTIONS
+};
+static const struct cli_option options[NOPTIONS] = {
+	[OPT_HEATMAP] = { "heatmap", 0, true },
+	[OPT_DOWNSAMPLE] = { "downsample", 0, true },
+	[OPT_PPM] = { "ppm", 0, true },
+	[OPT_MAX_RMSE] = { "max-rmse", 0, true },
+	[OPT_MIN_PSNR] = { "min-psnr", 0, true },
+	[OPT_MAX_ERROR] = { "max-error", 0, true },
+	[OPT_MAX_MEAN] = { "max-mean", 0, true },
+	[OPT_MAX_OFF] = { "max-off", 0, true },
+	[OPT_QUIET] = { "quiet", 'q', false },
+};
+
+/* Reads the command line into *a: 0, or -1 once the help is shown, or EXIT_USAGE after a
+ * usage message. */
 static int parse_args(const struct command *self, int argc, char **argv, struct diff_args *a)
 {
 	*a = (struct diff_args){ .downsample = 1, .max_rmse = -1, .min_psnr = -1, .max_error = -1,
 	                         .max_mean = -1, .max_off = -1 };
-	int npaths = 0;
-	for (int i = 1; i < argc; i++) {
-		const char *opt = argv[i], *v;
+	struct cli_parser p;
+	cli_parser_init(&p, self, options, NOPTIONS, argc, argv);
+	int o;
+	while ((o = cli_next_option(&p)) >= 0) {
+		const char *v = p.value;
 		double *limit = NULL;
-		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
-			return cli_help(self) - 1;
-		if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0) { a->quiet = true; continue; }
-		if (opt[0] != '-' || opt[1] == '\0') {
-			if (npaths == 2)
-				return cli_usage_error(self, "more than two images given ('%s')", opt);
-			a->path[npaths++] = opt;
-			continue;
-		}
-		if (strcmp(opt, "--max-rmse") == 0) limit = &a->max_rmse;
-		else if (strcmp(opt, "--min-psnr") == 0) limit = &a->min_psnr;
-		else if (strcmp(opt, "--max-error") == 0) limit = &a->max_error;
-		else if (strcmp(opt, "--max-mean") == 0) limit = &a->max_mean;
-		else if (strcmp(opt, "--max-off") == 0) limit = &a->max_off;
-		else if (strcmp(opt, "--heatmap") != 0 && strcmp(opt, "--downsample") != 0 &&
-		         strcmp(opt, "--ppm") != 0)
-			return cli_usage_error(self, "unknown option '%s' for diff", opt);
-		if (!(v = cli_value(argc, argv, &i)))
-			return cli_usage_error(self, "option '%s' needs a value", opt);
-		if (limit) {
-			bool percent = limit == &a->max_off;
-			if (!parse_number(v, percent, limit) || (percent && *limit > 100))
-				return cli_usage_error(self, "bad value '%s' for %s (%s)", v, opt,
-				                       percent ? "a percentage from 0 to 100" :
-				                       "a number >= 0, such as 0.001 or 2/65535");
-		} else if (strcmp(opt, "--heatmap") == 0) {
+		switch (o) {
+		case OPT_QUIET: a->quiet = true; continue;
+		case OPT_MAX_RMSE: limit = &a->max_rmse; break;
+		case OPT_MIN_PSNR: limit = &a->min_psnr; break;
+		case OPT_MAX_ERROR: limit = &a->max_error; break;
+		case OPT_MAX_MEAN: limit = &a->max_mean; break;
+		case OPT_MAX_OFF: limit = &a->max_off; break;
+		case OPT_HEATMAP:
 			if (image_format_of(v) < 0)
 				return cli_usage_error(self, "unknown image format for --heatmap '%s' (use .png, .exr or .ppm)", v);
 			a->heatmap = v;
-		} else if (strcmp(opt, "--downsample") == 0) {
+			continue;
+		case OPT_DOWNSAMPLE:
 			if (!cli_int(v, 1, 65536, &a->downsample))
 				return cli_usage_error(self, "bad value '%s' for --downsample (a whole number from 1 to 65536)", v);
-		} else if (!parse_ppm(v, a->ppm_linear)) {
-			return cli_usage_error(self, "bad value '%s' for --ppm (srgb, linear, or two of them: A's,B's)", v);
+			continue;
+		default: /* OPT_PPM */
+			if (!parse_ppm(v, a->ppm_linear))
+				return cli_usage_error(self, "bad value '%s' for --ppm (srgb, linear, or two of them: A's,B's)", v);
+			continue;
 		}
+		bool percent = limit == &a->max_off;
+		if (!parse_number(v, percent, limit) || (percent && *limit > 100))
+			return cli_usage_error(self, "bad value '%s' for %s (%s)", v, p.name,
+			                       percent ? "a percentage from 0 to 100" : "a number >= 0, such as 0.001 or 2/65535");
 	}
-	if (npaths < 2)
-		return cli_usage_error(self, npaths ? "only one image given; diff compares two" : "no images given");
+	if (o == CLI_STOP)
+		return p.status;
+	int n;
+	char **paths = cli_operands(&p, &n);
+	if (!paths)
+		return EXIT_USAGE;
+	if (n > 2)
+		return cli_usage_error(self, "more than two images given ('%s')", paths[2]);
+	if (n < 2)
+		return cli_usage_error(self, n ? "only one image given; diff compares two" : "no images given");
+	a->path[0] = paths[0];
+	a->path[1] = paths[1];
 	return 0;
 }
 

@@ -14,25 +14,24 @@
 #include "scene_desc.h"
 #include "xalloc.h"
 
+enum { OPT_OUT, NOPTIONS };
+static const struct cli_option options[NOPTIONS] = {
+	[OPT_OUT] = { NULL, 'o', true },
+};
+
 int cmd_pov(const struct command *self, int argc, char **argv)
 {
-	const char *scene = NULL, *out_arg = NULL;
-	for (int i = 1; i < argc; i++) {
-		const char *opt = argv[i];
-		int taken = cli_scene_arg(self, opt, &scene);
-		if (taken < 0)
-			return EXIT_USAGE;
-		if (taken)
-			continue;
-		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
-			return cli_help(self);
-		if (strcmp(opt, "-o") != 0)
-			return cli_usage_error(self, "unknown option '%s' for pov", opt);
-		if (!(out_arg = cli_value(argc, argv, &i)))
-			return cli_usage_error(self, "option '-o' needs a value");
-	}
+	const char *out_arg = NULL;
+	struct cli_parser p;
+	cli_parser_init(&p, self, options, NOPTIONS, argc, argv);
+	int o;
+	while ((o = cli_next_option(&p)) >= 0)
+		out_arg = p.value; /* OPT_OUT, the only one */
+	if (o == CLI_STOP)
+		return p.status < 0 ? 0 : p.status;
+	const char *scene = cli_scene(&p);
 	if (!scene)
-		return cli_usage_error(self, "no scene given");
+		return EXIT_USAGE;
 	bool to_stdout = out_arg && strcmp(out_arg, "-") == 0;
 	char *out = to_stdout || !out_arg ? cli_default_output(scene, ".pov") : xstrdup(out_arg);
 

@@ -31,51 +31,64 @@ struct render_args {
 	long x0, y0, x1, y1;
 };
 
+enum {
+	OPT_OUT, OPT_WIDTH, OPT_HEIGHT, OPT_SAMPLES, OPT_PATTERN, OPT_DEPTH, OPT_THREADS, OPT_ACCEL, OPT_REGION,
+	OPT_SEED, OPT_BIT_DEPTH, OPT_FLOAT, OPT_STATS, OPT_PROGRESS, OPT_NO_PROGRESS, OPT_QUIET, NOPTIONS
+};
+static const struct cli_option options[NOPTIONS] = {
+	[OPT_OUT] = { NULL, 'o', true },
+	[OPT_WIDTH] = { NULL, 'W', true },
+	[OPT_HEIGHT] = { NULL, 'H', true },
+	[OPT_SAMPLES] = { NULL, 's', true },
+	[OPT_PATTERN] = { NULL, 'p', true },
+	[OPT_DEPTH] = { NULL, 'd', true },
+	[OPT_THREADS] = { NULL, 'j', true },
+	[OPT_ACCEL] = { "accel", 0, true },
+	[OPT_REGION] = { "region", 0, true },
+	[OPT_SEED] = { "seed", 0, true },
+	[OPT_BIT_DEPTH] = { "bit-depth", 0, true },
+	[OPT_FLOAT] = { "float", 0, false },
+	[OPT_STATS] = { "stats", 0, false },
+	[OPT_PROGRESS] = { "progress", 0, false },
+	[OPT_NO_PROGRESS] = { "no-progress", 0, false },
+	[OPT_QUIET] = { NULL, 'q', false },
+};
+
+/* Reads the command line into *a: 0, or -1 once the help is shown, or EXIT_USAGE after a
+ * usage message. */
 static int parse_args(const struct command *self, int argc, char **argv, struct render_args *a)
 {
 	*a = (struct render_args){ .width = -1, .height = -1, .samples = -1, .depth = -1, .threads = 0,
 	                           .seed = -1, .bit_depth = 8, .pattern = -1, .progress = -1 };
-	for (int i = 1; i < argc; i++) {
-		const char *opt = argv[i], *v;
+	struct cli_parser p;
+	cli_parser_init(&p, self, options, NOPTIONS, argc, argv);
+	int o;
+	while ((o = cli_next_option(&p)) >= 0) {
+		const char *v = p.value;
 		long *target = NULL, lo = 0, hi = 0;
-		if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0)
-			return cli_help(self) - 1;
-		if (strcmp(opt, "--float") == 0) { a->float32 = true; continue; }
-		if (strcmp(opt, "--stats") == 0) { a->stats = true; continue; }
-		if (strcmp(opt, "--progress") == 0) { a->progress = 1; continue; }
-		if (strcmp(opt, "--no-progress") == 0) { a->progress = 0; continue; }
-		if (strcmp(opt, "-q") == 0) { a->quiet = true; continue; }
-		int taken = cli_scene_arg(self, opt, &a->scene);
-		if (taken < 0)
-			return EXIT_USAGE;
-		if (taken)
-			continue;
-		if (strcmp(opt, "-W") == 0) { target = &a->width; lo = 1; hi = 65536; }
-		else if (strcmp(opt, "-H") == 0) { target = &a->height; lo = 1; hi = 65536; }
-		else if (strcmp(opt, "-s") == 0) { target = &a->samples; lo = 1; hi = 65536; }
-		else if (strcmp(opt, "-d") == 0) { target = &a->depth; lo = 1; hi = 256; }
-		else if (strcmp(opt, "-j") == 0) { target = &a->threads; lo = 0; hi = 4096; }
-		else if (strcmp(opt, "--seed") == 0) { target = &a->seed; lo = 0; hi = 0x7fffffffffffffffL; }
-		else if (strcmp(opt, "--bit-depth") == 0) { target = &a->bit_depth; lo = 8; hi = 16; }
-		else if (strcmp(opt, "-o") != 0 && strcmp(opt, "-p") != 0 && strcmp(opt, "--accel") != 0 &&
-		         strcmp(opt, "--region") != 0)
-			return cli_usage_error(self, "unknown option '%s' for render", opt);
-		if (!(v = cli_value(argc, argv, &i)))
-			return cli_usage_error(self, "option '%s' needs a value", opt);
-		if (target) {
-			if (!cli_int(v, lo, hi, target) || (target == &a->bit_depth && *target != 8 && *target != 16))
-				return cli_usage_error(self, "bad value '%s' for %s (%s)", v, opt,
-				                       target == &a->bit_depth ? "8 or 16" : "a whole number in range");
-		} else if (strcmp(opt, "-o") == 0) {
-			a->out = v;
-		} else if (strcmp(opt, "-p") == 0) {
+		switch (o) {
+		case OPT_FLOAT: a->float32 = true; continue;
+		case OPT_STATS: a->stats = true; continue;
+		case OPT_PROGRESS: a->progress = 1; continue;
+		case OPT_NO_PROGRESS: a->progress = 0; continue;
+		case OPT_QUIET: a->quiet = true; continue;
+		case OPT_OUT: a->out = v; continue;
+		case OPT_WIDTH: target = &a->width; lo = 1; hi = 65536; break;
+		case OPT_HEIGHT: target = &a->height; lo = 1; hi = 65536; break;
+		case OPT_SAMPLES: target = &a->samples; lo = 1; hi = 65536; break;
+		case OPT_DEPTH: target = &a->depth; lo = 1; hi = 256; break;
+		case OPT_THREADS: target = &a->threads; lo = 0; hi = 4096; break;
+		case OPT_SEED: target = &a->seed; lo = 0; hi = 0x7fffffffffffffffL; break;
+		case OPT_BIT_DEPTH: target = &a->bit_depth; lo = 8; hi = 16; break;
+		case OPT_PATTERN:
 			a->pattern = -1;
-			for (int p = 0; p < PATTERN_COUNT; p++)
-				if (strcmp(v, scene_desc_pattern_name(p)) == 0)
-					a->pattern = p;
+			for (int k = 0; k < PATTERN_COUNT; k++)
+				if (strcmp(v, scene_desc_pattern_name(k)) == 0)
+					a->pattern = k;
 			if (a->pattern < 0)
 				return cli_usage_error(self, "unknown pattern '%s' (center, grid, random, jittered, poisson)", v);
-		} else if (strcmp(opt, "--accel") == 0) {
+			continue;
+		case OPT_ACCEL:
 			if (strcmp(v, "bvh") == 0)
 				a->accel = ACCEL_BVH;
 			else if (strcmp(v, "grid") == 0)
@@ -84,16 +97,22 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 				a->accel = ACCEL_NONE;
 			else
 				return cli_usage_error(self, "unknown accelerator '%s' (bvh, grid or none)", v);
-		} else { /* --region */
+			continue;
+		default: { /* OPT_REGION */
 			char tail;
 			if (sscanf(v, "%ld,%ld,%ld,%ld%c", &a->x0, &a->y0, &a->x1, &a->y1, &tail) != 4)
 				return cli_usage_error(self, "bad region '%s' (X0,Y0,X1,Y1)", v);
 			a->region = true;
+			continue;
 		}
+		}
+		if (!cli_int(v, lo, hi, target) || (target == &a->bit_depth && *target != 8 && *target != 16))
+			return cli_usage_error(self, "bad value '%s' for %s (%s)", v, p.name,
+			                       target == &a->bit_depth ? "8 or 16" : "a whole number in range");
 	}
-	if (!a->scene)
-		return cli_usage_error(self, "no scene given");
-	return 0;
+	if (o == CLI_STOP)
+		return p.status;
+	return (a->scene = cli_scene(&p)) ? 0 : EXIT_USAGE;
 }
 
 /* Applies the command line's overrides to the scene; a combination the language would

@@ -119,7 +119,10 @@ static void print_usage(FILE *out)
 	fprintf(out, "usage: scn COMMAND [ARGS]\n\ncommands:\n");
 	for (int i = 0; i < NCOMMANDS; i++)
 		fprintf(out, "  %s\n", commands[i].usage);
-	fprintf(out, "  scn --help | --version | help COMMAND\n");
+	fprintf(out, "  scn --help | --version | help COMMAND\n\n");
+	fprintf(out, "Options may come before or after the operands, in GNU's forms: --seed=5 or --seed 5,\n"
+	             "--se 5 (any unique prefix), -s16 or -s 16, -qj2 for -q -j 2; '--' ends the options.\n"
+	             "POV-Ray's options (+W320) are not scn's; the error names the command's equivalent.\n");
 }
 
 int main(int argc, char **argv)

@@ -11,3 +11,5 @@ TESTS += tests/cli/estimate.sh
 EXTRA_DIST += tests/cli/estimate.sh
 TESTS += tests/cli/converge.sh
 EXTRA_DIST += tests/cli/converge.sh
+TESTS += tests/cli/options.sh
+EXTRA_DIST += tests/cli/options.sh
