@@ -1,5 +1,5 @@
 /* pov_export.c: writes a lowered scene as the POV-Ray 3.7 scene that computes the same
- * image (povray-equivalence.md): the header that turns POV-Ray's extras off, the camera,
+ * image (doc/povray.md): the header that turns POV-Ray's extras off, the camera,
  * the sky, the lights, every material (pov_material.c: the single-layer recipe where exact,
  * the layered general recipe otherwise), and the world-space geometry (meshes as mesh2
  * in single precision, as POV-Ray stores them). The first lines are comments with the
@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "outfile.h"
+#include "pov_docdir.h"
 #include "pov_material.h"
 #include "pov_write.h"
 #include "xalloc.h"
@@ -610,7 +611,7 @@ static void write_header(struct pov *p)
 		fputs(", written by ", f);
 		pov_comment_text(f, p->opt->generator);
 	}
-	fputs(".\n// Render it in this file's folder (16-bit linear PNG, povray-equivalence.md):\n// Render: povray -D ", f);
+	fputs(".\n// Render it in this file's folder (a 16-bit linear PNG):\n// Render: povray -D ", f);
 	fprintf(f, "%s +W%ld +H%ld +FN16 File_Gamma=1.0 ", aa, (long)sc->camera.width * scale,
 	        (long)sc->camera.height * scale);
 	shell_word(f, "+I", name);
@@ -618,6 +619,8 @@ static void write_header(struct pov *p)
 	shell_word(f, "+O", png);
 	fputc('\n', f);
 	free(png);
+	fputs("// How each feature is translated, and where POV-Ray's image differs: " POV_DOCDIR "/povray.md"
+	      " (doc/povray.md in scn's source).\n", f);
 
 	static const char *const pattern[] = { "center", "grid", "random", "jittered", "poisson" };
 	if (scale > 1)

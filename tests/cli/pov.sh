@@ -1,7 +1,8 @@
-# pov.sh: `scn pov` (LANGUAGE.md section 8, povray-equivalence.md): every example translates
-# with the header and the command line; the recipes appear where they should; the output
-# name, standard output, standard input, exit statuses and atomic output; and, when povray
-# is installed, POV-Ray's render of the emitted scene agrees with scn's to 2/65535.
+# pov.sh: `scn pov` (LANGUAGE.md section 8, doc/povray.md): every example translates with
+# the header, the command line and the document that explains them; the recipes appear
+# where they should; the output name, standard output, standard input, exit statuses and
+# atomic output; and, when povray is installed, POV-Ray's render of the emitted scene
+# agrees with scn's to 2/65535.
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
@@ -27,6 +28,15 @@ for scene in "$SCN_SRCDIR"/examples/*.scn; do
 	expect_grep "$name.pov" "^// Render: povray -D (-A|\+A0\.0 \+AM2 \+R[0-9] -J) \+W[0-9]+ \+H[0-9]+ \+FN16 File_Gamma=1\.0 \+I$name\.pov \+O$name-pov\.png\$"
 	expect_grep "$name.pov" '^camera \{ perspective location <.*> look_at <.*> sky <.*> right x\*[0-9]+/[0-9]+ up y angle [0-9.]+ \}$'
 	expect_grep "$name.pov" '^background \{ rgb <'
+	# the header names the document that explains the translation, and every document it
+	# names ships with scn: a file of the source tree, or where make install puts one
+	expect_grep "$name.pov" "^// How each feature is translated, and where POV-Ray's image differs: /.*/povray\.md \(doc/povray\.md in scn's source\)\.\$"
+	for doc in $(sed -n '/^#version/q; p' "$name.pov" | grep -o '[^ (]*\.md'); do
+		case $doc in
+		/*) [ -f "$SCN_SRCDIR/doc/${doc##*/}" ] || fail "$name.pov names $doc, which is no installed document of scn" ;;
+		*) [ -f "$SCN_SRCDIR/$doc" ] || fail "$name.pov names $doc, which is not in scn's source" ;;
+		esac
+	done
 	# the comments come first: nothing but comments before #version
 	awk '/^#version/ { exit } !/^\/\// { bad = 1 } END { exit bad }' "$name.pov" ||
 		fail "$name.pov has something before #version that is not a comment"
