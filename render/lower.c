@@ -20,6 +20,7 @@ struct mesh_cache_entry {
 	const char *path;
 	struct mesh_data data;
 	bool ok;
+	int32_t source[2];             /* its scene mesh number, flat and smooth; -1: none yet */
 };
 
 struct lowering {
@@ -27,7 +28,7 @@ struct lowering {
 	const struct scene_desc *desc;
 	struct scene *sc;
 	size_t cap_surfaces, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
-	size_t cap_materials;
+	size_t cap_materials, cap_mesh_uses;
 	int *material_map;             /* desc material -> scene material, or -1 */
 	int default_material;          /* the scene material for objects without one, or -1 */
 	struct mesh_cache_entry *mesh_cache;
@@ -194,16 +195,26 @@ static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_
 	return true;
 }
 
+/* The cache entry of a file already read, or NULL. */
+static struct mesh_cache_entry *mesh_cached(struct lowering *lw, const char *path)
+{
+	for (size_t i = 0; i < lw->nmesh_cache; i++)
+		if (strcmp(lw->mesh_cache[i].path, path) == 0)
+			return &lw->mesh_cache[i];
+	return NULL;
+}
+
 /* The mesh data of a file (read once however many objects use it), or NULL after an error. */
 static const struct mesh_data *mesh_file(struct lowering *lw, const struct mesh_desc *m)
 {
-	for (size_t i = 0; i < lw->nmesh_cache; i++)
-		if (strcmp(lw->mesh_cache[i].path, m->path) == 0)
-			return lw->mesh_cache[i].ok ? &lw->mesh_cache[i].data : NULL;
+	struct mesh_cache_entry *entry = mesh_cached(lw, m->path);
+	if (entry)
+		return entry->ok ? &entry->data : NULL;
 	xgrow((void **)&lw->mesh_cache, &lw->cap_mesh_cache, lw->nmesh_cache + 1, sizeof *lw->mesh_cache);
-	struct mesh_cache_entry *entry = &lw->mesh_cache[lw->nmesh_cache++];
+	entry = &lw->mesh_cache[lw->nmesh_cache++];
 	memset(entry, 0, sizeof *entry);
 	entry->path = m->path;
+	entry->source[0] = entry->source[1] = -1;
 	char err[512];
 	double t0 = clock_now();
 	int rc = mesh_import(m->path, &entry->data, err, sizeof err);
@@ -267,6 +278,20 @@ static bool scene_fits(struct lowering *lw, int64_t other_bytes)
 		diag_plain(lw->diag, DIAG_ERROR, "the render needs %s for %zu objects, their BVH and the image; %s %s",
 		           need, desc->nobjects, limit_is, have);
 	return false;
+}
+
+/* Records that mesh file object o made surface, placed by x (inverse inv). */
+static void add_mesh_use(struct lowering *lw, const struct object_desc *o, uint32_t surface, const struct xform *x,
+                         const struct affine *inv, bool mirrored)
+{
+	struct scene *sc = lw->sc;
+	int32_t *source = &mesh_cached(lw, lw->desc->meshes[o->u.mesh.index].path)->source[o->smooth];
+	if (*source < 0)
+		*source = (int32_t)sc->nmesh_sources++;
+	xgrow((void **)&sc->mesh_uses, &lw->cap_mesh_uses, sc->nmesh_uses + 1, sizeof *sc->mesh_uses);
+	struct mesh_use *u = &sc->mesh_uses[sc->nmesh_uses++];
+	*u = (struct mesh_use){ .surface = surface, .mesh = (uint32_t)*source, .mirrored = mirrored, .to_object = *inv };
+	memcpy(u->to_world.m, x->m, sizeof u->to_world.m);
 }
 
 static void lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at)
@@ -336,6 +361,8 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	if (dropped)
 		diag_warning(lw->diag, *at, "%zu of this mesh's %zu triangles have no area and are not drawn", dropped,
 		             data->nfaces);
+	if (lw->desc->meshes[o->u.mesh.index].file)
+		add_mesh_use(lw, o, surface, x, &inv, mirrored);
 }
 
 static void lower_object(struct lowering *lw, const struct object_desc *o)

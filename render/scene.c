@@ -16,6 +16,7 @@ void scene_free(struct scene *s)
 	free(s->lights);
 	free(s->materials);
 	free(s->affines);
+	free(s->mesh_uses);
 	geometry_free(&s->geo);
 	free(s->sky.texels);
 	accel_free(&s->accel);

@@ -39,6 +39,17 @@ struct affine {
 	double m[3][4];
 };
 
+/* An object made of a mesh file, as lowering placed it: its triangles are those of surface,
+ * in world space, where to_world put the file's vertices (to_object maps back). Uses with
+ * the same mesh number are the same file shaded alike (smooth or flat), so that the POV-Ray
+ * export can write the mesh once and place it per use; the renderer ignores them. */
+struct mesh_use {
+	uint32_t surface;              /* into geo.surfaces */
+	uint32_t mesh;                 /* 0 .. nmesh_sources - 1 */
+	bool mirrored;                 /* to_world mirrors: lowering swapped each face's corners 1 and 2 */
+	struct affine to_world, to_object;
+};
+
 enum sky_kind { SKY_BLACK, SKY_CONSTANT, SKY_ZENITH_HORIZON, SKY_LATLONG };
 
 struct sky {
@@ -61,6 +72,8 @@ struct scene {
 	struct affine *affines;
 	size_t naffines;
 	struct geometry geo;           /* the primitives, and what each is made of */
+	struct mesh_use *mesh_uses;
+	size_t nmesh_uses, nmesh_sources;
 	struct sky sky;
 	struct sampling sampling;
 	int max_depth;

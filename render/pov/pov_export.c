@@ -1,9 +1,11 @@
 /* pov_export.c: writes a lowered scene as the POV-Ray 3.7 scene that computes the same
- * image (povray-equivalence.md): the header that turns POV-Ray's extras off, the camera,
+ * image (doc/povray.md): the header that turns POV-Ray's extras off, the camera,
  * the sky, the lights, every material (pov_material.c: the single-layer recipe where exact,
  * the layered general recipe otherwise), and the world-space geometry (meshes as mesh2
- * in single precision, as POV-Ray stores them). The first lines are comments with the
- * povray command line that renders it and whatever POV-Ray cannot reproduce exactly. */
+ * in single precision, as POV-Ray stores them; a mesh file that several objects use is
+ * declared once in its own space and placed by a matrix). The first lines are comments
+ * with the povray command line that renders it and whatever POV-Ray cannot reproduce
+ * exactly. */
 #include "pov_export.h"
 
 
@@ -19,6 +21,7 @@
 #include <unistd.h>
 
 #include "outfile.h"
+#include "pov_docdir.h"
 #include "pov_material.h"
 #include "pov_write.h"
 #include "xalloc.h"
@@ -38,6 +41,11 @@ struct pov {
 	char *notes;                   /* comment lines for the header, each ending in '\n' */
 	size_t notes_len;
 	unsigned char *how;            /* per first triangle of a run: enum write_as */
+	/* mesh file objects (scene.mesh_uses) written as one declared mesh2 each placed */
+	int32_t *use_of;               /* per surface: its mesh use, or -1 */
+	int32_t *shares;               /* per mesh use: the use whose mesh2 is declared for it
+	                                  (itself for that one), or -1: written alone */
+	size_t *run_of;                /* per mesh use written as mesh2: its first triangle */
 };
 
 static void note(struct pov *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -60,6 +68,29 @@ static void note(struct pov *p, const char *fmt, ...)
 	p->notes_len += (size_t)n;
 }
 
+/* p under the affine map a (scene.h). */
+static struct vec3 affine_point(const struct affine *a, struct vec3 p)
+{
+	const double (*m)[4] = a->m;
+	return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+	          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+	          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+}
+
+/* "matrix <...>": POV-Ray's twelve numbers are the columns of scn's map, the
+ * translation last. */
+static void write_matrix(FILE *f, const struct affine *a)
+{
+	fputs("matrix <", f);
+	for (int col = 0; col < 4; col++)
+		for (int row = 0; row < 3; row++) {
+			pov_num(f, a->m[row][col]);
+			if (col < 3 || row < 2)
+				fputs(", ", f);
+		}
+	fputc('>', f);
+}
+
 /* The material of a surface; a checker in object space gets the object's transform: POV-
  * Ray applies the inverse of a transform to the point, and `inverse` makes that inverse
  * exactly scn's to_object map. */
@@ -69,15 +100,9 @@ static void material_ref(struct pov *p, uint32_t surface)
 	const struct surface *s = &p->sc->geo.surfaces[surface];
 	fprintf(f, "material { scn_material_%u", (unsigned)s->material);
 	if (s->to_object >= 0 && p->sc->materials[s->material].checker) {
-		const double (*m)[4] = p->sc->affines[s->to_object].m;
-		fputs(" transform { matrix <", f);
-		for (int col = 0; col < 4; col++)
-			for (int row = 0; row < 3; row++) {
-				pov_num(f, m[row][col]);
-				if (col < 3 || row < 2)
-					fputs(", ", f);
-			}
-		fputs("> inverse }", f);
+		fputs(" transform { ", f);
+		write_matrix(f, &p->sc->affines[s->to_object]);
+		fputs(" inverse }", f);
 	}
 	fputs(" }", f);
 }
@@ -123,90 +148,168 @@ static void write_union(struct pov *p, size_t first, size_t last)
 	fputs("\n}\n", f);
 }
 
-static struct vec3 geometric_normal(const struct scene *sc, const struct triangle *t)
+/* A mesh2's coordinates: in world space, or, for own (a mesh file's use), in the file's
+ * own space, into which own's to_object map takes the world-space vertices back and the
+ * transpose of its to_world map the normals (POV-Ray's matrix then brings them out). */
+static struct vec3 mesh_vertex(const struct scene *sc, const struct mesh_use *own, uint32_t v)
 {
-	struct vec3 a = sc->geo.vertices[t->v[0]], b = sc->geo.vertices[t->v[1]], c = sc->geo.vertices[t->v[2]];
+	return own ? affine_point(&own->to_object, sc->geo.vertices[v]) : sc->geo.vertices[v];
+}
+
+static struct vec3 mesh_normal(const struct scene *sc, const struct mesh_use *own, uint32_t n)
+{
+	struct vec3 w = sc->geo.normals[n];
+	if (!own)
+		return w;
+	const double (*m)[4] = own->to_world.m;
+	return vunit(v3(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z, m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
+	                m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z));
+}
+
+static struct vec3 geometric_normal(const struct scene *sc, const struct mesh_use *own, const struct triangle *t)
+{
+	struct vec3 a = mesh_vertex(sc, own, t->v[0]), b = mesh_vertex(sc, own, t->v[1]), c = mesh_vertex(sc, own, t->v[2]);
 	return vcross(vsub(b, a), vsub(c, a));
 }
 
-/* Triangles [first, last) of one surface, as a mesh2. */
-static void write_mesh2(struct pov *p, size_t first, size_t last)
+/* The vertices and normals that triangles [first, last) use, as index ranges. */
+struct mesh_span {
+	uint32_t vmin, vmax, nmin, nmax;
+	size_t flat, smooth;           /* faces of each kind */
+	bool per_vertex;               /* normal k of a face is its vertex k's, shifted alike */
+};
+
+static struct mesh_span mesh_span(const struct scene *sc, size_t first, size_t last)
 {
-	const struct scene *sc = p->sc;
-	FILE *f = p->f;
-	uint32_t vmin = UINT32_MAX, vmax = 0, nmin = UINT32_MAX, nmax = 0;
-	size_t flat = 0, smooth = 0;
-	bool per_vertex = true;        /* normal k of a face is its vertex k's, shifted alike */
+	struct mesh_span m = { UINT32_MAX, 0, UINT32_MAX, 0, 0, 0, true };
 	for (size_t i = first; i < last; i++) {
 		const struct triangle *t = &sc->geo.triangles[i];
 		for (int k = 0; k < 3; k++) {
-			vmin = t->v[k] < vmin ? t->v[k] : vmin;
-			vmax = t->v[k] > vmax ? t->v[k] : vmax;
+			m.vmin = t->v[k] < m.vmin ? t->v[k] : m.vmin;
+			m.vmax = t->v[k] > m.vmax ? t->v[k] : m.vmax;
 			if (t->n[0] != TRIANGLE_FLAT) {
-				nmin = t->n[k] < nmin ? t->n[k] : nmin;
-				nmax = t->n[k] > nmax ? t->n[k] : nmax;
+				m.nmin = t->n[k] < m.nmin ? t->n[k] : m.nmin;
+				m.nmax = t->n[k] > m.nmax ? t->n[k] : m.nmax;
 			}
 		}
 		if (t->n[0] == TRIANGLE_FLAT)
-			flat++;
+			m.flat++;
 		else
-			smooth++;
+			m.smooth++;
 	}
-	if (smooth)
-		for (size_t i = first; i < last && per_vertex; i++) {
+	if (m.smooth)
+		for (size_t i = first; i < last && m.per_vertex; i++) {
 			const struct triangle *t = &sc->geo.triangles[i];
 			for (int k = 0; k < 3; k++)
-				per_vertex &= t->n[0] != TRIANGLE_FLAT && t->n[k] - nmin == t->v[k] - vmin;
+				m.per_vertex &= t->n[0] != TRIANGLE_FLAT && t->n[k] - m.nmin == t->v[k] - m.vmin;
 		}
-	per_vertex &= smooth && nmax - nmin == vmax - vmin;
+	m.per_vertex &= m.smooth && m.nmax - m.nmin == m.vmax - m.vmin;
+	return m;
+}
 
-	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(vmax - vmin + 1));
-	for (uint32_t v = vmin; v <= vmax; v++) {
-		fputs(v % 4 == vmin % 4 ? ",\n    " : ", ", f);
-		pov_fvec(f, sc->geo.vertices[v]);
+/* Whether the n triangles from a and those from b are the same faces on the same vertex
+ * and normal indices, each counted from its run's first; swap: corners 1 and 2 of b's
+ * faces swapped (lowering swaps them under a mirroring transform). */
+static bool same_faces(const struct scene *sc, size_t a, size_t b, size_t n, bool swap)
+{
+	struct mesh_span sa = mesh_span(sc, a, a + n), sb = mesh_span(sc, b, b + n);
+	if (sa.vmax - sa.vmin != sb.vmax - sb.vmin || sa.smooth != sb.smooth ||
+	    (sa.smooth && sa.nmax - sa.nmin != sb.nmax - sb.nmin))
+		return false;
+	static const int kept[3] = { 0, 1, 2 }, swapped[3] = { 0, 2, 1 };
+	const int *corner = swap ? swapped : kept;
+	for (size_t i = 0; i < n; i++) {
+		const struct triangle *s = &sc->geo.triangles[a + i], *t = &sc->geo.triangles[b + i];
+		if ((s->n[0] == TRIANGLE_FLAT) != (t->n[0] == TRIANGLE_FLAT))
+			return false;
+		for (int k = 0; k < 3; k++)
+			if (s->v[k] - sa.vmin != t->v[corner[k]] - sb.vmin ||
+			    (s->n[0] != TRIANGLE_FLAT && s->n[k] - sa.nmin != t->n[corner[k]] - sb.nmin))
+				return false;
+	}
+	return true;
+}
+
+/* Triangles [first, last) of one surface as "mesh2 { ..." up to its material, in world
+ * space or own's (mesh_vertex). */
+static void mesh2_body(struct pov *p, size_t first, size_t last, const struct mesh_use *own)
+{
+	const struct scene *sc = p->sc;
+	FILE *f = p->f;
+	struct mesh_span m = mesh_span(sc, first, last);
+	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(m.vmax - m.vmin + 1));
+	for (uint32_t v = m.vmin; v <= m.vmax; v++) {
+		fputs(v % 4 == m.vmin % 4 ? ",\n    " : ", ", f);
+		pov_fvec(f, mesh_vertex(sc, own, v));
 	}
 	fputs(" }\n", f);
-	if (smooth) {
+	if (m.smooth) {
 		/* a flat face among smooth ones gets three copies of its geometric normal,
 		 * which POV-Ray shades flat */
-		size_t nn = (size_t)(nmax - nmin + 1) + flat;
+		size_t nn = (size_t)(m.nmax - m.nmin + 1) + m.flat;
 		fprintf(f, "  normal_vectors { %zu", nn);
 		size_t k = 0;
-		for (uint32_t n = nmin; n <= nmax; n++, k++) {
+		for (uint32_t n = m.nmin; n <= m.nmax; n++, k++) {
 			fputs(k % 4 == 0 ? ",\n    " : ", ", f);
-			pov_fvec(f, sc->geo.normals[n]);
+			pov_fvec(f, mesh_normal(sc, own, n));
 		}
 		for (size_t i = first; i < last; i++)
 			if (sc->geo.triangles[i].n[0] == TRIANGLE_FLAT) {
 				fputs(k++ % 4 == 0 ? ",\n    " : ", ", f);
-				pov_fvec(f, vnorm(geometric_normal(sc, &sc->geo.triangles[i])));
+				pov_fvec(f, vnorm(geometric_normal(sc, own, &sc->geo.triangles[i])));
 			}
 		fputs(" }\n", f);
 	}
 	fprintf(f, "  face_indices { %zu", last - first);
 	for (size_t i = first; i < last; i++) {
 		const uint32_t *v = sc->geo.triangles[i].v;
-		fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", (unsigned long)(v[0] - vmin),
-		        (unsigned long)(v[1] - vmin), (unsigned long)(v[2] - vmin));
+		fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", (unsigned long)(v[0] - m.vmin),
+		        (unsigned long)(v[1] - m.vmin), (unsigned long)(v[2] - m.vmin));
 	}
 	fputs(" }\n", f);
-	if (smooth && !per_vertex) {
+	if (m.smooth && !m.per_vertex) {
 		fprintf(f, "  normal_indices { %zu", last - first);
-		size_t extra = (size_t)(nmax - nmin + 1);
+		size_t extra = (size_t)(m.nmax - m.nmin + 1);
 		for (size_t i = first; i < last; i++) {
 			const uint32_t *n = sc->geo.triangles[i].n;
 			unsigned long a, b, c;
 			if (n[0] == TRIANGLE_FLAT)
 				a = b = c = (unsigned long)extra++;
 			else
-				a = n[0] - nmin, b = n[1] - nmin, c = n[2] - nmin;
+				a = n[0] - m.nmin, b = n[1] - m.nmin, c = n[2] - m.nmin;
 			fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", a, b, c);
 		}
 		fputs(" }\n", f);
 	}
-	fputs("  ", f);
-	material_ref(p, sc->geo.triangles[first].surface);
-	fputs("\n}\n", f);
+}
+
+/* Triangles [first, last) of one surface, as a mesh2 in world space. */
+static void write_mesh2(struct pov *p, size_t first, size_t last)
+{
+	mesh2_body(p, first, last, NULL);
+	fputs("  ", p->f);
+	material_ref(p, p->sc->geo.triangles[first].surface);
+	fputs("\n}\n", p->f);
+}
+
+/* Triangles [first, last), the mesh file object of mesh use u, placed by its transform
+ * as an object of the mesh2 declared (in the file's own space) at the first use that it
+ * shares. The material follows the matrix, so that it stays in world space. */
+static void write_placed(struct pov *p, size_t first, size_t last, int32_t u)
+{
+	const struct mesh_use *use = &p->sc->mesh_uses[u];
+	FILE *f = p->f;
+	if (p->shares[u] == u) {
+		fprintf(f, "// scn_mesh_%u: a mesh file that several objects use, in its own coordinates;"
+		           " each object { } places it\n#declare scn_mesh_%u = ", (unsigned)use->mesh, (unsigned)use->mesh);
+		mesh2_body(p, first, last, use);
+		fputs("}\n", f);
+	}
+	fprintf(f, "object { scn_mesh_%u ", (unsigned)use->mesh);
+	write_matrix(f, &use->to_world);
+	fputs(" ", f);
+	material_ref(p, use->surface);
+	fputs(" }\n", f);
 }
 
 /* Whether every edge of triangles [first, last) is shared by exactly two of them, once
@@ -247,12 +350,7 @@ static bool closed_surface(const struct scene *sc, size_t first, size_t last)
 /* The point p in the checker's own space of surface s. */
 static struct vec3 object_point(const struct scene *sc, const struct surface *s, struct vec3 p)
 {
-	if (s->to_object < 0)
-		return p;
-	const double (*m)[4] = sc->affines[s->to_object].m;
-	return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-	          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-	          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+	return s->to_object < 0 ? p : affine_point(&sc->affines[s->to_object], p);
 }
 
 /* Whether a face of triangles [first, last) lies in a plane where its checker changes
@@ -295,7 +393,7 @@ static bool smooth_kept(const struct scene *sc, size_t i)
 	const struct triangle *t = &sc->geo.triangles[i];
 	if (t->n[0] == TRIANGLE_FLAT)
 		return true;
-	struct vec3 g = geometric_normal(sc, t);
+	struct vec3 g = geometric_normal(sc, NULL, t);
 	double d0 = vdot(g, sc->geo.normals[t->n[0]]), d1 = vdot(g, sc->geo.normals[t->n[1]]),
 	       d2 = vdot(g, sc->geo.normals[t->n[2]]);
 	return (d0 > 0 && d1 > 0 && d2 > 0) || (d0 < 0 && d1 < 0 && d2 < 0);
@@ -393,6 +491,43 @@ static void analyse(struct pov *p)
 		        " objects' iors where a ray passes from one into the other, scn by each surface's ior against"
 		        " air (not pixel-exact there)",
 		     nested);
+}
+
+/* Which mesh file objects written as mesh2 place one declared mesh2 (p->shares): those
+ * with the same faces as the first such use of the same file, shaded alike; the others
+ * (their faces differ where lowering dropped some) are written alone. */
+static void find_shared(struct pov *p)
+{
+	const struct scene *sc = p->sc;
+	p->use_of = xmalloc((sc->geo.nsurfaces ? sc->geo.nsurfaces : 1) * sizeof *p->use_of);
+	for (size_t i = 0; i < sc->geo.nsurfaces; i++)
+		p->use_of[i] = -1;
+	size_t nuses = sc->nmesh_uses ? sc->nmesh_uses : 1;
+	p->shares = xmalloc(nuses * sizeof *p->shares);
+	p->run_of = xmalloc(nuses * sizeof *p->run_of);
+	for (size_t u = 0; u < sc->nmesh_uses; u++) {
+		p->use_of[sc->mesh_uses[u].surface] = (int32_t)u;
+		p->shares[u] = -1;
+	}
+	int32_t *first_use = xmalloc((sc->nmesh_sources ? sc->nmesh_sources : 1) * sizeof *first_use);
+	for (size_t m = 0; m < sc->nmesh_sources; m++)
+		first_use[m] = -1;
+	for (size_t first = 0; first < sc->geo.ntriangles;) {
+		size_t last = run_end(sc, first);
+		int32_t u = p->use_of[sc->geo.triangles[first].surface];
+		if (u >= 0 && p->how[first] == WRITE_MESH2) {
+			const struct mesh_use *use = &sc->mesh_uses[u];
+			int32_t d = first_use[use->mesh];
+			p->run_of[u] = first;
+			if (d < 0)
+				first_use[use->mesh] = u;
+			else if (run_end(sc, p->run_of[d]) - p->run_of[d] == last - first &&
+			         same_faces(sc, p->run_of[d], first, last - first, sc->mesh_uses[d].mirrored != use->mirrored))
+				p->shares[u] = p->shares[d] = d;
+		}
+		first = last;
+	}
+	free(first_use);
 }
 
 /* --- camera, sky, lights --- */
@@ -610,7 +745,7 @@ static void write_header(struct pov *p)
 		fputs(", written by ", f);
 		pov_comment_text(f, p->opt->generator);
 	}
-	fputs(".\n// Render it in this file's folder (16-bit linear PNG, povray-equivalence.md):\n// Render: povray -D ", f);
+	fputs(".\n// Render it in this file's folder (a 16-bit linear PNG):\n// Render: povray -D ", f);
 	fprintf(f, "%s +W%ld +H%ld +FN16 File_Gamma=1.0 ", aa, (long)sc->camera.width * scale,
 	        (long)sc->camera.height * scale);
 	shell_word(f, "+I", name);
@@ -618,6 +753,8 @@ static void write_header(struct pov *p)
 	shell_word(f, "+O", png);
 	fputc('\n', f);
 	free(png);
+	fputs("// How each feature is translated, and where POV-Ray's image differs: " POV_DOCDIR "/povray.md"
+	      " (doc/povray.md in scn's source).\n", f);
 
 	static const char *const pattern[] = { "center", "grid", "random", "jittered", "poisson" };
 	if (scale > 1)
@@ -663,10 +800,13 @@ static void write_objects(struct pov *p)
 		write_vec_num_shape(p, "plane", sc->geo.planes[i].normal, sc->geo.planes[i].offset, sc->geo.planes[i].surface);
 	for (size_t first = 0; first < sc->geo.ntriangles;) {
 		size_t last = run_end(sc, first);
+		int32_t placed = p->use_of[sc->geo.triangles[first].surface];
 		if (p->how[first] == WRITE_TRIANGLE)
 			write_triangle(p, first);
 		else if (p->how[first] == WRITE_UNION)
 			write_union(p, first, last);
+		else if (placed >= 0 && p->shares[placed] >= 0)
+			write_placed(p, first, last, placed);
 		else
 			write_mesh2(p, first, last);
 		first = last;
@@ -692,6 +832,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	}
 	p.how = xcalloc(sc->geo.ntriangles ? sc->geo.ntriangles : 1, sizeof *p.how);
 	analyse(&p);
+	find_shared(&p);
 	write_header(&p);
 	write_camera(&p);
 	write_sky(&p);
@@ -700,6 +841,9 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 		pov_write_material(out, i, &sc->materials[i]);
 	write_objects(&p);
 	free(p.how);
+	free(p.use_of);
+	free(p.shares);
+	free(p.run_of);
 	free(p.notes);
 	int rc = 0;
 	errno = 0;

@@ -1,6 +1,6 @@
 /* pov_export.h: the POV-Ray 3.7 back end: writes a lowered scene as POV-Ray SDL that
  * computes scn's model (LANGUAGE.md "Shading") with the recipes of
- * povray-equivalence.md, headed by the povray command line that renders it. */
+ * doc/povray.md, headed by the povray command line that renders it. */
 #ifndef SCN_POV_EXPORT_H
 #define SCN_POV_EXPORT_H
 

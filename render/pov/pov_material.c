@@ -1,5 +1,5 @@
 /* pov_material.c: an scn material as the POV-Ray material that shades as it does
- * (povray-equivalence.md section 7): the single-layer recipe where that is exact, the
+ * (doc/povray.md, "Materials"): the single-layer recipe where that is exact, the
  * layered general recipe otherwise, and the interior that carries the index of
  * refraction. */
 #include "pov_material.h"
@@ -9,7 +9,7 @@
 #include "pov_write.h"
 
 /* A colour channel this small stands in for zero where a layer must not filter to
- * exactly 0 (povray-equivalence.md section 7): POV-Ray skips the layers below one. */
+ * exactly 0 (doc/povray.md, "Materials"): POV-Ray skips the layers below one. */
 #define TINY 1e-7
 
 static bool grey(struct vec3 v)

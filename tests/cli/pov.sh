@@ -1,7 +1,8 @@
-# pov.sh: `scn pov` (LANGUAGE.md section 8, povray-equivalence.md): every example translates
-# with the header and the command line; the recipes appear where they should; the output
-# name, standard output, standard input, exit statuses and atomic output; and, when povray
-# is installed, POV-Ray's render of the emitted scene agrees with scn's to 2/65535.
+# pov.sh: `scn pov` (LANGUAGE.md section 8, doc/povray.md): every example translates with
+# the header, the command line and the document that explains them; the recipes appear
+# where they should; the output name, standard output, standard input, exit statuses and
+# atomic output; and, when povray is installed, POV-Ray's render of the emitted scene
+# agrees with scn's to 2/65535.
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
@@ -27,6 +28,15 @@ for scene in "$SCN_SRCDIR"/examples/*.scn; do
 	expect_grep "$name.pov" "^// Render: povray -D (-A|\+A0\.0 \+AM2 \+R[0-9] -J) \+W[0-9]+ \+H[0-9]+ \+FN16 File_Gamma=1\.0 \+I$name\.pov \+O$name-pov\.png\$"
 	expect_grep "$name.pov" '^camera \{ perspective location <.*> look_at <.*> sky <.*> right x\*[0-9]+/[0-9]+ up y angle [0-9.]+ \}$'
 	expect_grep "$name.pov" '^background \{ rgb <'
+	# the header names the document that explains the translation, and every document it
+	# names ships with scn: a file of the source tree, or where make install puts one
+	expect_grep "$name.pov" "^// How each feature is translated, and where POV-Ray's image differs: /.*/povray\.md \(doc/povray\.md in scn's source\)\.\$"
+	for doc in $(sed -n '/^#version/q; p' "$name.pov" | grep -o '[^ (]*\.md'); do
+		case $doc in
+		/*) [ -f "$SCN_SRCDIR/doc/${doc##*/}" ] || fail "$name.pov names $doc, which is no installed document of scn" ;;
+		*) [ -f "$SCN_SRCDIR/$doc" ] || fail "$name.pov names $doc, which is not in scn's source" ;;
+		esac
+	done
 	# the comments come first: nothing but comments before #version
 	awk '/^#version/ { exit } !/^\/\// { bad = 1 } END { exit bad }' "$name.pov" ||
 		fail "$name.pov has something before #version that is not a comment"
@@ -109,6 +119,38 @@ expect_status 0 "$SCN" pov mixed.scn -o -
 expect_grep "$work/out" '^// 1 smooth triangle\(s\) have vertex normals on both sides'
 expect_grep "$work/out" '^mesh2 \{'
 
+# a mesh file used by several objects is declared once, in its own coordinates, and each
+# object places it with a matrix and its own material (a mirrored use and a checker that
+# follows its object included); a use shaded otherwise (smooth) is a mesh of its own, and
+# a mesh used once is written in place as before
+cat >instances.scn <<EOF
+camera { location <0, 1.2, -4> look_at <0, 0.5, 0> fov 50 resolution 80, 60 }
+light { position <-3, 6, -4> }
+light { direction <1, -0.5, 1> intensity 0.3 }
+plane { <0, 1, 0>, 0 material { diffuse 0.5 } }
+mesh { "$SCN_SRCDIR/examples/bunny.ply" scale 6 rotate <0, -150, 0> translate <-0.6, 0.01, 0> smooth
+       material { diffuse <0.85, 0.72, 0.55> specular 0.2 shininess 40 } }
+mesh { "$SCN_SRCDIR/examples/bunny.ply" scale <-5, 5, 5> rotate <0, 150, 0> translate <0.7, 0.01, 0.4> smooth
+       material { diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.5, 0.8>, 0.01) } }
+mesh { "$SCN_SRCDIR/tests/pov/octa.obj" scale 0.3 translate <-1.5, 0.31, -0.5> material { diffuse <0.3, 0.6, 0.9> } }
+mesh { "$SCN_SRCDIR/tests/pov/octa.obj" scale <-0.2, 0.4, 0.3> rotate <0, 30, 10> translate <1.5, 0.5, -0.5> }
+mesh { "$SCN_SRCDIR/tests/pov/octa.obj" smooth scale 0.25 translate <0, 1.5, 0.5> }
+EOF
+expect_status 0 "$SCN" pov instances.scn
+[ "$(grep -c 'vertex_vectors' instances.pov)" = 3 ] ||
+	fail "instances.pov writes $(grep -c 'vertex_vectors' instances.pov) meshes' vertices, not 3 (bunny, flat and smooth octahedron)"
+[ "$(grep -c '^#declare scn_mesh_[0-9]* = mesh2 {$' instances.pov)" = 2 ] ||
+	fail "instances.pov does not declare exactly the bunny and the flat octahedron"
+expect_grep instances.pov '^#declare scn_mesh_0 = mesh2 \{$'
+[ "$(grep -c '^object { scn_mesh_0 matrix <.*> material { scn_material_[0-9]* .*}$' instances.pov)" = 2 ] ||
+	fail "instances.pov does not place the bunny twice"
+expect_grep instances.pov '^object \{ scn_mesh_0 matrix <.*> material \{ scn_material_[0-9]+ transform \{ matrix <.*> inverse \} \} \}$'
+[ "$(grep -c '^object { scn_mesh_1 matrix <' instances.pov)" = 2 ] ||
+	fail "instances.pov does not place the flat octahedron twice"
+[ "$(grep -c '^mesh2 {$' instances.pov)" = 1 ] || fail "instances.pov does not write the smooth octahedron in place"
+# the bunny's first vertex in the file's own coordinates (bunny.ply's, not moved)
+expect_grep instances.pov '^    <0\.0203421097,0\.00191596872,0\.0398447029>, '
+
 # --- names, standard input and output, statuses, atomic output ---
 mkdir names && cd names || exit 99
 expect_status 0 "$SCN" pov ../features.scn
@@ -177,6 +219,12 @@ if povray_run grid2.pov; then
 	"$SCN" render grid2.scn -o grid2-scn.exr --float -q || fail "scn render grid2.scn exited $?"
 	"$SCN" diff grid2-scn.exr grid2-pov.png --downsample 2 --max-error 2/65535 >diff.out 2>&1 ||
 		{ fail "POV-Ray's render of grid2.pov differs from scn's"; cat diff.out; }
+fi
+# the placed meshes
+if povray_run instances.pov; then
+	"$SCN" render instances.scn -o instances-scn.png --bit-depth 16 -q || fail "scn render instances.scn exited $?"
+	"$SCN" diff instances-scn.png instances-pov.png --max-error 2/65535 >diff.out 2>&1 ||
+		{ fail "POV-Ray's render of instances.pov differs from scn's"; cat diff.out; }
 fi
 # a sky image, named from the .pov's own folder
 if povray_run sub/skybox.pov +W64 +H40; then

@@ -32,6 +32,7 @@ POV_TESTS = \
 	tests/pov/materials_layered.scn \
 	tests/pov/mesh_files.scn \
 	tests/pov/mesh_inline.scn \
+	tests/pov/mesh_instances.scn \
 	tests/pov/mirrors_depth1.scn \
 	tests/pov/mirrors_depth10.scn \
 	tests/pov/mirrors_depth3.scn \
