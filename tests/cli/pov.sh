@@ -134,7 +134,7 @@ mesh { "$SCN_SRCDIR/examples/bunny.ply" scale <-5, 5, 5> rotate <0, 150, 0> tran
        material { diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.5, 0.8>, 0.01) } }
 mesh { "$SCN_SRCDIR/tests/pov/octa.obj" scale 0.3 translate <-1.5, 0.31, -0.5> material { diffuse <0.3, 0.6, 0.9> } }
 mesh { "$SCN_SRCDIR/tests/pov/octa.obj" scale <-0.2, 0.4, 0.3> rotate <0, 30, 10> translate <1.5, 0.5, -0.5> }
-mesh { "$SCN_SRCDIR/tests/pov/octa.obj" smooth scale 0.25 translate <0, 1.5, 0.5> }
+mesh { "$SCN_SRCDIR/tests/pov/octa.obj" smooth scale 0.25 rotate <45, 0, 0> translate <0, 1.5, 0.5> }
 EOF
 expect_status 0 "$SCN" pov instances.scn
 [ "$(grep -c 'vertex_vectors' instances.pov)" = 3 ] ||
@@ -223,7 +223,10 @@ fi
 # the placed meshes
 if povray_run instances.pov; then
 	"$SCN" render instances.scn -o instances-scn.png --bit-depth 16 -q || fail "scn render instances.scn exited $?"
-	"$SCN" diff instances-scn.png instances-pov.png --max-error 2/65535 >diff.out 2>&1 ||
+	# a few pixels where a shadow's edge crosses a smooth bunny: scn starts shadow rays on the
+	# curved surface the normals describe, POV-Ray on the flat one (doc/povray.md); a wrong
+	# placement would move whole meshes
+	"$SCN" diff instances-scn.png instances-pov.png --max-off 0.1% --max-mean 0.1/255 >diff.out 2>&1 ||
 		{ fail "POV-Ray's render of instances.pov differs from scn's"; cat diff.out; }
 fi
 # a sky image, named from the .pov's own folder
