@@ -25,3 +25,4 @@ include tests/extreme/local.mk
 include tests/fuzz/local.mk
 include tests/layout/local.mk
 include tests/bench/local.mk
+include tests/editors/local.mk
