@@ -24,3 +24,4 @@ include tests/valgrind/local.mk
 include tests/extreme/local.mk
 include tests/fuzz/local.mk
 include tests/layout/local.mk
+include tests/mesh/local.mk

@@ -330,6 +330,10 @@ static void test_errors(void)
 	}
 	unlink(path);
 	rmdir(tmp);
+	/* vertices that are not finite: a glTF's float inf, an OBJ's inf, nan and 1e39 */
+	expect_error(fixture("infinite.gltf"), false, "mesh file '",
+	             "': 2 of its 3 vertices have coordinates that are not finite (inf or nan, or beyond float's 3.4e38)");
+	expect_error(fixture("infinite.obj"), false, "mesh file '", "': 3 of its 5 vertices have coordinates");
 	/* and its Triangulate would abort the process on this one */
 	expect_error(fixture("empty_faces.ply"), false, "malformed mesh file '", "face 1 has no vertices");
 
@@ -349,7 +353,7 @@ static void test_quiet(void)
 		"square.obj", "quad.obj", "normals.obj", "partial_normals.obj", "mixed.obj", "lines.obj",
 		"bad_index.obj", "empty.obj", "ascii.ply", "binary.ply", "bad_number.ply", "truncated.ply",
 		"garbage.bin", "nodes.gltf", "no_such_file.obj", "no_end_header.ply", "cut_faces.ply",
-		"empty_faces.ply",
+		"empty_faces.ply", "infinite.gltf", "infinite.obj",
 	};
 	FILE *tmp = tmpfile();
 	if (!tmp) {

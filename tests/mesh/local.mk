@@ -1,0 +1,3 @@
+# tests/mesh/local.mk: the tests of this folder: mesh files as scn reads them.
+TESTS += tests/mesh/messages.sh
+EXTRA_DIST += tests/mesh/messages.sh
