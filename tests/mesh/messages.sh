@@ -1,10 +1,17 @@
-# messages.sh: what scn says about mesh files that assimp reads but that draw nothing:
-# vertices that are not finite are an error naming the file (a glTF's float inf, an
-# OBJ's inf, nan and 1e39).
+# messages.sh: what scn says about mesh files that assimp reads but that draw nothing or
+# only part: vertices that are not finite are an error naming the file (a glTF's float
+# inf, an OBJ's inf, nan and 1e39), triangles without area a warning that says why
+# (corners that coincide, as assimp makes of an OFF face line without its indices, or on
+# one line).
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
 cp "$SCN_SRCDIR/tests/unit/meshes/infinite.gltf" "$SCN_SRCDIR/tests/unit/meshes/infinite.obj" . || exit 99
+# as assimp's OFF/invalid.off: a face line that gives its count but not its indices,
+# which assimp reads as vertex 0 three times
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3\n' >short_face.off
+# as assimp's OBJ/number_formats.obj: the face joins three points of one line
+printf 'v 0 0 0\nv 1 2 3\nv -1 -2 -3\nf 1 2 3\n' >on_a_line.obj
 
 # scene MESH: a scene of that one mesh statement, as scene.scn
 scene() {
@@ -25,4 +32,12 @@ expect_first 1 "scene.scn:3:8: error: mesh file 'infinite.obj': 3 of its 5 verti
 # the render stops at the same error, with no image
 expect_status 1 "$SCN" render scene.scn -W 8 -H 6 -q -o out.png
 [ ! -e out.png ] || fail "a render with a non-finite mesh wrote out.png"
+
+scene 'mesh { "short_face.off" }'
+expect_first 0 "scene.scn:3:1: warning: this mesh is not drawn: none of its 1 triangles has an area (1 has coinciding corners)"
+scene 'mesh { "on_a_line.obj" }'
+expect_first 0 "scene.scn:3:1: warning: this mesh is not drawn: none of its 1 triangles has an area (1 has its corners on one line)"
+# some drawn, some not, for both reasons
+scene 'mesh { vertices { <0, 0, 0>, <1, 0, 0>, <0, 1, 0>, <2, 0, 0> }  faces { <0, 1, 2>, <0, 1, 1>, <0, 1, 3>, <2, 2, 2> } }'
+expect_first 0 "scene.scn:3:1: warning: 3 of this mesh's 4 triangles have no area and are not drawn (2 have coinciding corners, 1 has its corners on one line)"
 finish
