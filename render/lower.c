@@ -166,12 +166,15 @@ static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
  * warning): it is valid, only too small to compute with, and too small to see. */
 #define MIN_RADIUS 1e-100
 
-/* Reports what at `at` when it reaches extent from the origin (after its transforms). */
-static void check_extent(struct lowering *lw, struct span at, const char *what, double extent)
+/* Reports what at `at` when it reaches extent from the origin (after its transforms);
+ * returns whether it stays within the limit. */
+static bool check_extent(struct lowering *lw, struct span at, const char *what, double extent)
 {
-	if (!(extent <= MAX_EXTENT))
-		diag_error(lw->diag, at, "%s reaches %g from the origin, beyond the limit of 1e100 (its arithmetic would overflow)",
-		           what, extent);
+	if (extent <= MAX_EXTENT)
+		return true;
+	diag_error(lw->diag, at, "%s reaches %g from the origin, beyond the limit of 1e100 (its arithmetic would overflow)",
+	           what, extent);
+	return false;
 }
 
 static double extent_of(struct vec3 p)
@@ -294,6 +297,36 @@ static void add_mesh_use(struct lowering *lw, const struct object_desc *o, uint3
 	memcpy(u->to_world.m, x->m, sizeof u->to_world.m);
 }
 
+/* Whether two of a triangle's corners are one point; a triangle without area whose
+ * corners are apart has them on one line. */
+static bool corners_coincide(struct vec3 a, struct vec3 b, struct vec3 c)
+{
+	return vzero(vsub(a, b)) || vzero(vsub(b, c)) || vzero(vsub(c, a));
+}
+
+/* Warns at `at` that dropped of a mesh's nfaces triangles have no area: coinciding of
+ * them because two corners are one point (a file's face that repeats a vertex, as assimp
+ * makes of an OFF face line without its indices), the others because their corners are on
+ * one line. When none is left, it says that the mesh is not drawn, since the image then
+ * simply lacks it. */
+static void warn_no_area(struct lowering *lw, struct span at, size_t dropped, size_t coinciding, size_t nfaces)
+{
+	char why[96] = "", line[64] = "";
+	size_t apart = dropped - coinciding;
+	if (apart)
+		snprintf(line, sizeof line, "%zu %s corners on one line", apart, apart == 1 ? "has its" : "have their");
+	if (coinciding)
+		snprintf(why, sizeof why, "%zu %s coinciding corners%s%s", coinciding, coinciding == 1 ? "has" : "have",
+		         apart ? ", " : "", line);
+	else
+		snprintf(why, sizeof why, "%s", line);
+	if (dropped == nfaces)
+		diag_warning(lw->diag, at, "this mesh is not drawn: none of its %zu triangles has an area (%s)", nfaces, why);
+	else
+		diag_warning(lw->diag, at, "%zu of this mesh's %zu triangles have no area and are not drawn (%s)", dropped,
+		             nfaces, why);
+}
+
 static void lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at)
 {
 	struct mesh_data inline_data;
@@ -312,7 +345,9 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		uint32_t v = add_vertex(lw, xform_point(x, v3a(data->vertices[i])));
 		extent = fmax(extent, extent_of(sc->geo.vertices[v]));
 	}
-	check_extent(lw, *at, "this mesh", extent);
+	/* beyond it, its triangles' areas are lost to rounding: not the file's fault */
+	if (!check_extent(lw, *at, "this mesh", extent))
+		return;
 
 	uint32_t nbase = (uint32_t)sc->geo.nnormals;
 	if (o->smooth) {
@@ -340,7 +375,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		}
 		sc->geo.nnormals += data->nvertices;
 	}
-	size_t dropped = 0;
+	size_t dropped = 0, coinciding = 0;
 	for (size_t f = 0; f < data->nfaces; f++) {
 		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
 		for (int k = 0; k < 3; k++) {
@@ -356,11 +391,13 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 			v[1] = v[2], n[1] = n[2];
 			v[2] = t, n[2] = tn;
 		}
-		dropped += !add_triangle(lw, v, n, surface);
+		if (!add_triangle(lw, v, n, surface)) {
+			dropped++;
+			coinciding += corners_coincide(sc->geo.vertices[v[0]], sc->geo.vertices[v[1]], sc->geo.vertices[v[2]]);
+		}
 	}
 	if (dropped)
-		diag_warning(lw->diag, *at, "%zu of this mesh's %zu triangles have no area and are not drawn", dropped,
-		             data->nfaces);
+		warn_no_area(lw, *at, dropped, coinciding, data->nfaces);
 	if (lw->desc->meshes[o->u.mesh.index].file)
 		add_mesh_use(lw, o, surface, x, &inv, mirrored);
 }

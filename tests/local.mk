@@ -26,3 +26,4 @@ include tests/fuzz/local.mk
 include tests/layout/local.mk
 include tests/bench/local.mk
 include tests/editors/local.mk
+include tests/mesh/local.mk

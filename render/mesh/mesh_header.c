@@ -5,10 +5,11 @@
  *   allocates for them up front (16 bytes and more per element), so a few bytes claiming
  *   10^9 vertices would have it ask for gigabytes, and fail, or worse, before it finds
  *   that the file holds none of them.
- * - a PLY header must follow PLY's grammar (the "ply" line, format, comment, obj_info,
- *   element, property and end_header lines, known types, each element once): assimp 5.2
- *   writes past its buffers on some malformed headers, such as repeated elements with
- *   unknown property types (found by fuzzing; valgrind shows the write).
+ * - a PLY header must declare each element once: assimp 5.2 writes past its buffers
+ *   when an element comes again with a larger count (found by fuzzing; valgrind shows
+ *   the write).
+ * Nothing else is checked: these checks guard memory and time, and must not refuse a
+ * file that assimp reads, such as a PLY with a header line it does not know.
  * Each element takes some bytes in the file, so a count beyond the file's size is a
  * malformed file, refused with the count in the message. */
 #include "mesh_header.h"
@@ -77,29 +78,37 @@ static unsigned ply_type_size(const char *type)
 	return 0;
 }
 
-/* Whether a PLY property line of k words declares known types: "property TYPE NAME" or
- * "property list COUNT-TYPE ITEM-TYPE NAME". */
-static bool ply_property_ok(char word[][64], int k)
+/* The bytes one value of a PLY property line of k words takes at least: "property TYPE
+ * NAME" its type's binary size, "property list COUNT-TYPE ITEM-TYPE NAME" its count's,
+ * or two in ASCII (a digit and a blank); 0 for any other line, which ends the element's
+ * properties for assimp (as a type it does not know does). */
+static unsigned ply_property_bytes(char word[][64], int k, bool ascii)
 {
-	return (k == 3 && ply_type_size(word[1])) ||
-	       (k == 5 && strcmp(word[1], "list") == 0 && ply_type_size(word[2]) && ply_type_size(word[3]));
+	unsigned size = k == 3 ? ply_type_size(word[1]) :
+	                k == 5 && strcmp(word[1], "list") == 0 && ply_type_size(word[3]) ? ply_type_size(word[2]) : 0;
+	return size && ascii ? 2 : size;
 }
 
-/* Checks a PLY header (its first len bytes, up to and with its end_header line) line by
- * line against PLY's grammar, and the elements it declares against the rest of the
- * file, size bytes: each element takes, per property, at least its binary size, or two
- * bytes in ASCII (a digit and a blank); a list at least its count. */
+/* Checks a PLY header (its first len bytes, up to and with its end_header line) for what
+ * assimp 5.2 needs to keep its memory sound, and nothing more: an element's name comes
+ * once (when one comes again with a larger count, assimp writes past its buffers: found
+ * by fuzzing, valgrind shows the write), and the elements fit in the rest of the file,
+ * size bytes (each element takes at least the bytes of its properties, up to the first
+ * that assimp would not read, and at least one). Every other line is assimp's to judge:
+ * it refuses a bad magic or format line itself, and skips the lines it does not know,
+ * such as the "Created by Blender3D" line without "comment" of Blender 2.4's files. */
 static int ply_counts(const char *head, size_t len, long long size, const char *path, char *err,
                       size_t errlen)
 {
-	bool ascii = false;
+	bool ascii = true;             /* as the bound for a format assimp refuses */
 	double need = 0;               /* bytes, for the elements before the current one */
 	double count = 0;              /* of the current element */
 	unsigned bytes = 0;            /* per current element, at least */
+	bool counting = false;         /* the current element's properties have not ended */
 	char name[64] = "";
-	char seen[16][64];             /* the element names so far: each may come once */
-	int nseen = 0;
-	bool magic = false;            /* the first line that is not blank, "ply", was seen */
+	char (*seen)[64] = NULL;       /* the element names so far: each may come once */
+	size_t nseen = 0, cap_seen = 0;
+	int rc = 0;
 	for (size_t i = 0, line_no = 0; i < len; line_no++) {
 		const char *eol = memchr(head + i, '\n', len - i);
 		size_t n = eol ? (size_t)(eol - (head + i)) : len - i;
@@ -107,45 +116,42 @@ static int ply_counts(const char *head, size_t len, long long size, const char *
 		snprintf(line, sizeof line, "%.*s", (int)(n < sizeof line ? n : sizeof line - 1), head + i);
 		i += n + 1;
 		int k = sscanf(line, "%63s %63s %63s %63s %63s", word[0], word[1], word[2], word[3], word[4]);
-		bool ok = true, element = false, end = false;
-		if (k <= 0) {
-			continue;      /* a blank line */
-		} else if (!magic) {
-			ok = magic = k == 1 && strcmp(word[0], "ply") == 0;
-		} else if (strcmp(word[0], "comment") == 0 || strcmp(word[0], "obj_info") == 0) {
-		} else if (strcmp(word[0], "format") == 0) {
-			ascii = k == 3 && strcmp(word[1], "ascii") == 0;
-			ok = k == 3 && (ascii || strcmp(word[1], "binary_little_endian") == 0 ||
-			                strcmp(word[1], "binary_big_endian") == 0);
-		} else if (strcmp(word[0], "property") == 0) {
-			ok = ply_property_ok(word, k);
-			if (ok)
-				bytes += ascii ? 2 : ply_type_size(k == 5 ? word[2] : word[1]);
-		} else if (strcmp(word[0], "element") == 0) {
-			ok = element = k == 3 && nseen < 16;
-			for (int e = 0; ok && e < nseen; e++)
-				ok = strcmp(seen[e], word[1]) != 0;
-		} else {
-			ok = end = k == 1 && strcmp(word[0], "end_header") == 0;
-		}
-		if (!ok)
-			return mesh_header_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, '%s', "
-			                 "is not PLY", path, line_no + 1, line);
-		if (!element && !end)
+		if (k <= 0 || strcmp(word[0], "comment") == 0)
 			continue;
+		bool element = strcmp(word[0], "element") == 0;
+		bool end = k == 1 && strcmp(word[0], "end_header") == 0;
+		if (strcmp(word[0], "format") == 0)
+			ascii = k < 2 || strncmp(word[1], "binary_", 7) != 0;
+		if (!element && !end) {
+			unsigned b = strcmp(word[0], "property") == 0 ? ply_property_bytes(word, k, ascii) : 0;
+			counting = counting && b;
+			bytes += counting ? b : 0;
+			continue;
+		}
 		/* the element before this line is complete */
 		need += count * (bytes ? bytes : 1);
-		if (need > (double)size)
-			return mesh_header_fail(err, errlen, "malformed mesh file '%s': its PLY header declares %.0f "
-					 "'%s' elements, more than its %lld bytes can hold", path, count, name, size);
+		if (need > (double)size) {
+			rc = mesh_header_fail(err, errlen, "malformed mesh file '%s': its PLY header declares %.0f "
+			                      "'%s' elements, more than its %lld bytes can hold", path, count, name, size);
+			break;
+		}
 		if (end)
-			return 0;
-		count = fmax(strtod(word[2], NULL), 0); /* assimp reads a minus sign as 0 */
+			break;
+		snprintf(name, sizeof name, "%s", k >= 2 ? word[1] : "");
+		for (size_t e = 0; e < nseen && rc == 0; e++)
+			if (strcmp(seen[e], name) == 0)
+				rc = mesh_header_fail(err, errlen, "malformed mesh file '%s': line %zu of its PLY header, "
+				                      "'%s', declares element '%s' again", path, line_no + 1, line, name);
+		if (rc)
+			break;
+		xgrow((void **)&seen, &cap_seen, nseen + 1, sizeof *seen);
+		memcpy(seen[nseen++], name, sizeof name);
+		count = k >= 3 ? fmax(strtod(word[2], NULL), 0) : 0; /* assimp reads a minus sign as 0 */
 		bytes = 0;
-		snprintf(name, sizeof name, "%s", word[1]);
-		snprintf(seen[nseen++], sizeof seen[0], "%s", word[1]);
+		counting = true;
 	}
-	return 0;
+	free(seen);
+	return rc;
 }
 
 /* Skips blanks, line ends and comment lines, as assimp's OFF reader does between tokens. */

@@ -251,6 +251,18 @@ static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_
 	out->nfaces = nf;
 }
 
+/* The number of m's vertices with a coordinate that is not finite. assimp gives them as
+ * the file has them (a glTF's float inf), or as it reads a number beyond float's range
+ * (an OBJ's 1e39 is inf). Such a vertex has no place, and its triangles no area, so a
+ * file of them would render as nothing with only a warning about areas. */
+static size_t nonfinite_vertices(const struct mesh_data *m)
+{
+	size_t n = 0;
+	for (size_t i = 0; i < m->nvertices; i++)
+		n += !(isfinite(m->vertices[i][0]) && isfinite(m->vertices[i][1]) && isfinite(m->vertices[i][2]));
+	return n;
+}
+
 int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errlen)
 {
 	memset(out, 0, sizeof *out);
@@ -276,6 +288,13 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 	if (out->nfaces == 0)
 		return mesh_header_fail(err, errlen, "no triangles in '%s'", path);
 	mesh_join(out);
+	size_t bad = nonfinite_vertices(out);
+	if (bad) {
+		size_t n = out->nvertices;
+		mesh_import_free(out);
+		return mesh_header_fail(err, errlen, "mesh file '%s': %zu of its %zu vertices have coordinates that "
+		                        "are not finite (inf or nan, or beyond float's 3.4e38)", path, bad, n);
+	}
 	return 0;
 }
 

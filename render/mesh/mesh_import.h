@@ -18,9 +18,10 @@ struct mesh_data {
 /* Reads the mesh file at path into *out: every triangle of every mesh in the file, with the
  * node transforms applied, polygons triangulated, points and lines left out, and corners
  * that share a position (and normal) joined. Normals come only from the file, and only
- * when every triangle has valid ones; otherwise nnormals is 0. Degenerate and non-finite
- * triangles are kept (the caller drops them, with a warning). Values pass through assimp's
- * float, so they are exact only to float precision.
+ * when every triangle has valid ones; otherwise nnormals is 0. Degenerate triangles are
+ * kept (the caller drops them, with a warning); a vertex that a triangle uses and whose
+ * coordinates are not finite is an error. Values pass through assimp's float, so they
+ * are exact only to float precision.
  * Returns 0, or writes into err a message naming path and the problem and returns nonzero
  * with *out empty: ENOMEM when reading it would need more memory than the machine has
  * (memory.h; found before assimp's post-processing, which would crash), 1 otherwise.

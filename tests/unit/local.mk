@@ -33,7 +33,8 @@ TESTS += tests/unit/test_shape
 tests_unit_test_shape_SOURCES = tests/unit/test_shape.c
 tests_unit_test_shape_LDADD = $(SCN_LIBS)
 EXTRA_DIST += tests/unit/meshes/cut_faces.ply tests/unit/meshes/no_end_header.ply \
-	tests/unit/meshes/empty_faces.ply
+	tests/unit/meshes/empty_faces.ply tests/unit/meshes/unknown_lines.ply \
+	tests/unit/meshes/infinite.gltf tests/unit/meshes/infinite.obj
 check_PROGRAMS += tests/unit/test_imgdiff
 TESTS += tests/unit/test_imgdiff
 tests_unit_test_imgdiff_SOURCES = tests/unit/test_imgdiff.c

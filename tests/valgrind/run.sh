@@ -1,6 +1,7 @@
 # run.sh: `make check-valgrind`: a representative subset of scn's work under valgrind's
 # memcheck: front-end errors, the parse of every kind of statement, a small render of
-# every example (each feature, PNG sky, PLY mesh), OBJ and inline meshes, the three
+# every example (each feature, PNG sky, PLY mesh), OBJ and inline meshes, a model of each
+# mesh format that the man page lists (from assimp-testmodels, where installed), the three
 # image formats written and read back, scn pov, scn diff and a short scn converge. Each
 # run must end with its usual status, no memcheck error and no byte definitely lost.
 # Prints one line a run and a summary; exit status 0 when every run passed, 77 when
@@ -59,6 +60,19 @@ mesh { "$src/tests/unit/meshes/quad.obj"  translate <1, 0, 0> }
 mesh { vertices { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }  faces { <0, 1, 2> }  translate <-1, 0, 0> }
 SCENE
 vg 0 render meshes.scn -q -o meshes.ppm
+# a model of each mesh format that man/scn.1 lists, where assimp-testmodels is installed:
+# memcheck sees into assimp, which the sanitizer build does not instrument
+models=/usr/share/assimp/models
+if [ -d "$models" ]; then
+	# (a for loop, not a pipe, so that vg counts in this shell; the names have no blanks)
+	for m in $(grep -v '^#' "$src/tests/mesh/formats.txt"); do
+		printf 'camera { location <0, 1, -6>  look_at <0, 0, 0>  resolution 16, 12 }\n%s\nmesh { "%s" }\n' \
+			'light { position <-4, 8, -6> }' "$models/$m" >model.scn
+		vg 0 render model.scn -q -o model.ppm
+	done
+else
+	echo "skipped: the models of each mesh format (no $models: assimp-testmodels is not installed)"
+fi
 # every output format, every sample pattern, read back by scn diff
 vg 0 render "$src/examples/whitted.scn" -W 32 -H 24 -s 9 -p grid -q -o w.exr
 vg 0 render "$src/examples/whitted.scn" -W 32 -H 24 -s 9 -p grid -q --float -o w32.exr
