@@ -254,6 +254,8 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
 		diag_error(c->diag, at, "%s takes %zu value%s before its attributes: %s", spec->what, npos,
 		           npos == 1 ? "" : "s", spec->signature);
 	}
+	for (size_t i = 0; i < args->n; i++) /* a mesh's file name with a bad escape, say */
+		c->tainted |= args->v[i]->kind == AST_ERROR;
 	for (size_t i = 0; i < args->n && i < npos; i++) {
 		if (args->v[i]->kind == AST_STR)
 			diag_error(c->diag, args->v[i]->span, "%s takes a value here, not a string", spec->what);
