@@ -33,6 +33,7 @@ struct lang_ctx {
 		char ch;
 	} open[LANG_MAX_NESTING];
 	uint32_t indent;              /* bytes of blank before the first token of the current line */
+	uint32_t line_first;          /* local offset of that first token */
 	/* A '}' that starts its line indented less than the line of the '{' it closed, and
 	 * as much as the line of the '{' around that (meant): if that outer '{' is left open
 	 * at the end, the '}' was most likely meant for it, and the inner '{' is the one not
