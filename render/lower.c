@@ -96,14 +96,6 @@ static bool xform_mirrors(const struct xform *x)
 	return det3(a) < 0;
 }
 
-/* Normals transform by the inverse transpose of the linear part. */
-static struct vec3 xform_normal(const struct affine *inv, struct vec3 n)
-{
-	return v3(inv->m[0][0] * n.x + inv->m[1][0] * n.y + inv->m[2][0] * n.z,
-	          inv->m[0][1] * n.x + inv->m[1][1] * n.y + inv->m[2][1] * n.z,
-	          inv->m[0][2] * n.x + inv->m[1][2] * n.y + inv->m[2][2] * n.z);
-}
-
 static struct material lower_material(const struct material_desc *m)
 {
 	struct material out = {
@@ -355,7 +347,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		struct vec3 *normals = &sc->geo.normals[nbase];
 		if (data->nnormals == data->nvertices && data->normals) {
 			for (size_t i = 0; i < data->nvertices; i++)
-				normals[i] = xform_normal(&inv, v3a(data->normals[i]));
+				normals[i] = affine_normal(&inv, v3a(data->normals[i]));
 		} else {
 			/* area-weighted: the unnormalised face normal is twice the face's area */
 			memset(normals, 0, data->nvertices * sizeof *normals);
@@ -428,7 +420,7 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 		struct vec3 n = vunit(v3a(o->u.plane.normal));
 		struct vec3 on = xform_point(x, vscale(n, o->u.plane.offset)); /* a point of the plane */
 		struct affine inv = affine_inverse(x);
-		struct vec3 wn = vunit(xform_normal(&inv, n));
+		struct vec3 wn = vunit(affine_normal(&inv, n));
 		xgrow((void **)&sc->geo.planes, &lw->cap_planes, sc->geo.nplanes + 1, sizeof *sc->geo.planes);
 		struct plane *p = &sc->geo.planes[sc->geo.nplanes++];
 		p->normal = wn;

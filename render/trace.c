@@ -49,13 +49,6 @@ struct vec3 trace_sky(const struct sky *sky, struct vec3 d)
 	return v3s(0);
 }
 
-static struct vec3 apply_affine(const struct affine *a, struct vec3 p)
-{
-	return v3(a->m[0][0] * p.x + a->m[0][1] * p.y + a->m[0][2] * p.z + a->m[0][3],
-	          a->m[1][0] * p.x + a->m[1][1] * p.y + a->m[1][2] * p.z + a->m[1][3],
-	          a->m[2][0] * p.x + a->m[2][1] * p.y + a->m[2][2] * p.z + a->m[2][3]);
-}
-
 /* k_d at p: a checker is evaluated in the object's own space, with POV-Ray's 1e-10
  * bias so that points a rounding error below a cell boundary count as above it. */
 static struct vec3 diffuse_at(const struct scene *sc, const struct surface *srf, const struct material *m,
@@ -64,7 +57,7 @@ static struct vec3 diffuse_at(const struct scene *sc, const struct surface *srf,
 	if (!m->checker)
 		return m->diffuse;
 	if (srf->to_object >= 0)
-		p = apply_affine(&sc->affines[srf->to_object], p);
+		p = affine_point(&sc->affines[srf->to_object], p);
 	double s = m->checker_size;
 	double sum = floor(p.x / s + 1e-10) + floor(p.y / s + 1e-10) + floor(p.z / s + 1e-10);
 	return fmod(sum, 2) == 0 ? m->diffuse : m->diffuse2;

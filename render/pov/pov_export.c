@@ -68,15 +68,6 @@ static void note(struct pov *p, const char *fmt, ...)
 	p->notes_len += (size_t)n;
 }
 
-/* p under the affine map a (scene.h). */
-static struct vec3 affine_point(const struct affine *a, struct vec3 p)
-{
-	const double (*m)[4] = a->m;
-	return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-	          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-	          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
-}
-
 /* "matrix <...>": POV-Ray's twelve numbers are the columns of scn's map, the
  * translation last. */
 static void write_matrix(FILE *f, const struct affine *a)
@@ -159,11 +150,7 @@ static struct vec3 mesh_vertex(const struct scene *sc, const struct mesh_use *ow
 static struct vec3 mesh_normal(const struct scene *sc, const struct mesh_use *own, uint32_t n)
 {
 	struct vec3 w = sc->geo.normals[n];
-	if (!own)
-		return w;
-	const double (*m)[4] = own->to_world.m;
-	return vunit(v3(m[0][0] * w.x + m[1][0] * w.y + m[2][0] * w.z, m[0][1] * w.x + m[1][1] * w.y + m[2][1] * w.z,
-	                m[0][2] * w.x + m[1][2] * w.y + m[2][2] * w.z));
+	return own ? vunit(affine_normal(&own->to_world, w)) : w;
 }
 
 static struct vec3 geometric_normal(const struct scene *sc, const struct mesh_use *own, const struct triangle *t)
