@@ -629,6 +629,8 @@ static void eval_object(struct evaluator *ev, struct ast *s, const struct source
 		o->xforms[o->nxforms] = x;
 		obj.xform = (int)o->nxforms++;
 	}
+	obj.pattern_xform = obj.xform;
+	obj.solid = kw == KW_SPHERE || kw == KW_PLANE;
 	if (kw == KW_TRIANGLE) {
 		double e1[3], e2[3], n[3];
 		for (int k = 0; k < 3; k++) {

@@ -56,19 +56,44 @@ struct mesh_desc {
 	struct span file_span;
 };
 
-enum object_kind { OBJ_SPHERE, OBJ_PLANE, OBJ_TRIANGLE, OBJ_MESH };
+/* LANGUAGE.md sections 5 and 9. OBJ_CSG is union, merge, intersection or difference. */
+enum object_kind { OBJ_SPHERE, OBJ_PLANE, OBJ_TRIANGLE, OBJ_MESH, OBJ_BOX, OBJ_CYLINDER, OBJ_CONE, OBJ_DISC,
+                   OBJ_TORUS, OBJ_CSG };
+enum csg_op { CSG_UNION, CSG_MERGE, CSG_INTERSECTION, CSG_DIFFERENCE };
 
+/* An object, as evaluation leaves it: every value checked (no degenerate shape reaches
+ * lowering), the transforms of the CSGs around it composed into its own.
+ * The objects of a CSG follow it in scene_desc.objects, in their order, each one's own
+ * members after it (preorder): the CSG at index k holds objects k + 1 to k + u.csg.size,
+ * and its direct members are the first of those and, after each, the one u.csg.size + 1
+ * further on when it is a CSG itself (1 further on when not). */
 struct object_desc {
 	enum object_kind kind;
-	int material;                  /* index into materials; -1 is the default material */
-	int xform;                     /* index into xforms; -1 is the identity */
-	bool smooth;
+	int material;                  /* index into materials: its own, else the nearest enclosing
+	                                * CSG's (POV-Ray's texture inheritance); -1 is the default */
+	int xform;                     /* index into xforms: its own transforms, then those of each
+	                                * enclosing CSG, innermost first; -1 is the identity */
+	int pattern_xform;             /* the space the material's patterns live in: xform when the
+	                                * material is its own, the CSG's xform when inherited; -1 the
+	                                * identity */
+	bool smooth;                   /* mesh */
+	bool open;                     /* cylinder, cone: no end discs */
+	bool inverse;                  /* inside and outside swapped (a solid, or a CSG of solids) */
+	bool solid;                    /* it has an inside: LANGUAGE.md section 9's list */
+	bool has_inside_vector;        /* mesh: inside_vector given (then it is solid) */
+	double inside_vector[3];
 	struct span span;
 	union {
 		struct { double center[3], radius; } sphere;
 		struct { double normal[3], offset; } plane;
 		struct { double v[3][3]; } triangle;
 		struct { int index; } mesh;    /* into meshes */
+		struct { double corner[2][3]; } box;   /* as written: any two opposite corners */
+		/* cylinder: radius[0] == radius[1]; cone: one of them may be 0 */
+		struct { double base[3], cap[3], radius[2]; } cone;
+		struct { double center[3], normal[3], radius, hole; } disc;   /* hole 0: none */
+		struct { double major, minor; } torus;
+		struct { enum csg_op op; uint32_t size; } csg;
 	} u;
 };
 

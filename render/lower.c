@@ -131,9 +131,9 @@ static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
 	struct scene *sc = lw->sc;
 	uint32_t mat = material_of(lw, o->material);
 	int32_t to_object = -1;
-	if (sc->materials[mat].checker && o->xform >= 0) {
+	if (sc->materials[mat].checker && o->pattern_xform >= 0) {
 		xgrow((void **)&sc->affines, &lw->cap_affines, sc->naffines + 1, sizeof *sc->affines);
-		sc->affines[sc->naffines] = affine_inverse(&lw->desc->xforms[o->xform]);
+		sc->affines[sc->naffines] = affine_inverse(&lw->desc->xforms[o->pattern_xform]);
 		to_object = (int32_t)sc->naffines++;
 	}
 	xgrow((void **)&sc->geo.surfaces, &lw->cap_surfaces, sc->geo.nsurfaces + 1, sizeof *sc->geo.surfaces);
