@@ -53,6 +53,8 @@ struct mesh_desc {
 	size_t nfaces;
 	double (*normals)[3];          /* one per vertex, or NULL */
 	size_t nnormals;
+	bool has_inside_vector;        /* inside_vector given: the mesh is a solid */
+	double inside_vector[3];
 	struct span file_span;
 };
 
@@ -68,7 +70,6 @@ enum csg_op { CSG_UNION, CSG_MERGE, CSG_INTERSECTION, CSG_DIFFERENCE };
  * and its direct members are the first of those and, after each, the one u.csg.size + 1
  * further on when it is a CSG itself (1 further on when not). */
 struct object_desc {
-	enum object_kind kind;
 	int material;                  /* index into materials: its own, else the nearest enclosing
 	                                * CSG's (POV-Ray's texture inheritance); -1 is the default */
 	int xform;                     /* index into xforms: its own transforms, then those of each
@@ -76,13 +77,14 @@ struct object_desc {
 	int pattern_xform;             /* the space the material's patterns live in: xform when the
 	                                * material is its own, the CSG's xform when inherited; -1 the
 	                                * identity */
-	bool smooth;                   /* mesh */
-	bool open;                     /* cylinder, cone: no end discs */
-	bool inverse;                  /* inside and outside swapped (a solid, or a CSG of solids) */
-	bool solid;                    /* it has an inside: LANGUAGE.md section 9's list */
-	bool has_inside_vector;        /* mesh: inside_vector given (then it is solid) */
-	double inside_vector[3];
 	struct span span;
+	/* packed: a scene may hold 10^7 objects (LANG_MAX_OBJECTS) */
+	uint8_t kind;                  /* enum object_kind */
+	bool smooth : 1;               /* mesh */
+	bool open : 1;                 /* cylinder, cone: no end discs */
+	bool inverse : 1;              /* inside and outside swapped (a solid, or a CSG of solids) */
+	bool solid : 1;                /* it has an inside: LANGUAGE.md section 9's list (a mesh
+	                                * when its mesh_desc has an inside_vector) */
 	union {
 		struct { double center[3], radius; } sphere;
 		struct { double normal[3], offset; } plane;

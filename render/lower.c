@@ -13,6 +13,7 @@
 #include "image_file.h"
 #include "memory.h"
 #include "mesh_import.h"
+#include "part_make.h"
 #include "shape.h"
 #include "xalloc.h"
 
@@ -28,7 +29,7 @@ struct lowering {
 	const struct scene_desc *desc;
 	struct scene *sc;
 	size_t cap_surfaces, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
-	size_t cap_materials, cap_mesh_uses;
+	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded;
 	int *material_map;             /* desc material -> scene material, or -1 */
 	int default_material;          /* the scene material for objects without one, or -1 */
 	struct mesh_cache_entry *mesh_cache;
@@ -37,63 +38,33 @@ struct lowering {
 	bool too_big;                  /* a mesh file or the sky image needs more memory than there is */
 };
 
+/* The scene description's transform as the renderer's affine map (the same layout). */
+static struct affine affine_of(const struct xform *x)
+{
+	struct affine a;
+	memcpy(a.m, x->m, sizeof a.m);
+	return a;
+}
+
 static struct vec3 xform_point(const struct xform *x, struct vec3 p)
 {
-	const double (*m)[4] = x->m;
-	return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-	          m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-	          m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+	struct affine a = affine_of(x);
+	return affine_point(&a, p);
 }
 
-/* The inverse of an affine map (its linear part is invertible: scales are never zero). */
-/* The linear part of x divided by its largest entry (returned), so that its cofactors
- * and determinant neither underflow nor overflow for a scale of 1e-250 or 1e90. */
-static double scaled_linear(const struct xform *x, double a[3][3])
+static struct affine xform_inverse(const struct xform *x)
 {
-	double big = 0;
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++)
-			big = fmax(big, fabs(x->m[i][j]));
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++)
-			a[i][j] = x->m[i][j] / big;
-	return big;
+	struct affine a = affine_of(x);
+	return affine_inverse(&a);
 }
 
-static double det3(const double a[3][3])
-{
-	return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-	       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-}
-
-static struct affine affine_inverse(const struct xform *x)
-{
-	double a[3][3];
-	double big = scaled_linear(x, a);
-	double c[3][3] = {
-		{ a[1][1] * a[2][2] - a[1][2] * a[2][1], a[0][2] * a[2][1] - a[0][1] * a[2][2], a[0][1] * a[1][2] - a[0][2] * a[1][1] },
-		{ a[1][2] * a[2][0] - a[1][0] * a[2][2], a[0][0] * a[2][2] - a[0][2] * a[2][0], a[0][2] * a[1][0] - a[0][0] * a[1][2] },
-		{ a[1][0] * a[2][1] - a[1][1] * a[2][0], a[0][1] * a[2][0] - a[0][0] * a[2][1], a[0][0] * a[1][1] - a[0][1] * a[1][0] },
-	};
-	double det = det3(a);
-	const double (*m)[4] = x->m;
-	struct affine inv;
-	for (int i = 0; i < 3; i++) {
-		for (int j = 0; j < 3; j++)
-			inv.m[i][j] = c[i][j] / det / big; /* (M / big)^-1 = big M^-1 */
-		inv.m[i][3] = -(inv.m[i][0] * m[0][3] + inv.m[i][1] * m[1][3] + inv.m[i][2] * m[2][3]);
-	}
-	return inv;
-}
-
-/* Whether x mirrors space (its linear part has a negative determinant): a triangle's
- * corners then go the other way round, and are swapped so that (B-A) x (C-A) still
- * points to the side that was the outside (a mirrored closed mesh stays solid). */
+/* Whether x mirrors space: a triangle's corners then go the other way round, and are
+ * swapped so that (B-A) x (C-A) still points to the side that was the outside (a
+ * mirrored closed mesh stays solid). */
 static bool xform_mirrors(const struct xform *x)
 {
-	double a[3][3];
-	scaled_linear(x, a);
-	return det3(a) < 0;
+	struct affine a = affine_of(x);
+	return affine_mirrors(&a);
 }
 
 static struct material lower_material(const struct material_desc *m)
@@ -133,7 +104,7 @@ static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
 	int32_t to_object = -1;
 	if (sc->materials[mat].checker && o->pattern_xform >= 0) {
 		xgrow((void **)&sc->affines, &lw->cap_affines, sc->naffines + 1, sizeof *sc->affines);
-		sc->affines[sc->naffines] = affine_inverse(&lw->desc->xforms[o->pattern_xform]);
+		sc->affines[sc->naffines] = xform_inverse(&lw->desc->xforms[o->pattern_xform]);
 		to_object = (int32_t)sc->naffines++;
 	}
 	xgrow((void **)&sc->geo.surfaces, &lw->cap_surfaces, sc->geo.nsurfaces + 1, sizeof *sc->geo.surfaces);
@@ -328,7 +299,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	struct scene *sc = lw->sc;
 	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
 	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
-	struct affine inv = affine_inverse(x);
+	struct affine inv = xform_inverse(x);
 	bool mirrored = xform_mirrors(x);
 	uint32_t surface = add_surface(lw, o);
 	uint32_t base = (uint32_t)sc->geo.nvertices;
@@ -394,14 +365,181 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		add_mesh_use(lw, o, surface, x, &inv, mirrored);
 }
 
-static void lower_object(struct lowering *lw, const struct object_desc *o)
+/* The index of the object after object i and its members. */
+static size_t next_object(const struct scene_desc *d, size_t i)
+{
+	return i + 1 + (d->objects[i].kind == OBJ_CSG ? d->objects[i].u.csg.size : 0);
+}
+
+static const char *const object_names[] = {
+	[OBJ_SPHERE] = "sphere", [OBJ_PLANE] = "plane", [OBJ_BOX] = "box", [OBJ_CYLINDER] = "cylinder",
+	[OBJ_CONE] = "cone", [OBJ_DISC] = "disc", [OBJ_TORUS] = "torus", [OBJ_CSG] = "CSG",
+	[OBJ_TRIANGLE] = "triangle", [OBJ_MESH] = "mesh",
+};
+
+static uint32_t add_part(struct lowering *lw, const struct part *p)
+{
+	struct geometry *g = &lw->sc->geo;
+	xgrow((void **)&g->parts, &lw->cap_parts, g->nparts + 1, sizeof *g->parts);
+	g->parts[g->nparts] = *p;
+	return (uint32_t)g->nparts++;
+}
+
+static int64_t lower_part(struct lowering *lw, size_t i, bool invert);
+
+/* The CSG node of object i, with inversion pushed down to its leaves as POV-Ray inverts a
+ * CSG (De Morgan): an inverse union or merge is the intersection of its inverted members,
+ * an inverse intersection the merge of its inverted members, and a difference the
+ * intersection of its first member and its other members inverted. -1 when it is empty. */
+static int64_t lower_csg(struct lowering *lw, size_t i, bool invert)
+{
+	const struct scene_desc *d = lw->desc;
+	const struct object_desc *o = &d->objects[i];
+	bool inv = o->inverse != invert;
+	struct part node = { .kind = PART_CSG };
+	switch (o->u.csg.op) {
+	case CSG_UNION: node.op = inv ? PART_INTERSECT : PART_ALL; break;
+	case CSG_MERGE: node.op = inv ? PART_INTERSECT : PART_MERGE; break;
+	case CSG_INTERSECTION: node.op = inv ? PART_MERGE : PART_INTERSECT; break;
+	case CSG_DIFFERENCE: node.op = inv ? PART_MERGE : PART_INTERSECT; break;
+	}
+	uint32_t *kids = xmalloc(o->u.csg.size * sizeof *kids), n = 0;
+	bool empty = false;
+	for (size_t j = i + 1; j < next_object(d, i); j = next_object(d, j)) {
+		bool cutter = o->u.csg.op == CSG_DIFFERENCE && j != i + 1;
+		int64_t k = lower_part(lw, j, cutter != inv);
+		if (k >= 0)
+			kids[n++] = (uint32_t)k;
+		else
+			empty |= node.op == PART_INTERSECT; /* nothing intersected with something */
+	}
+	int64_t index = -1;
+	if (n && !empty) {
+		struct geometry *g = &lw->sc->geo;
+		xgrow((void **)&g->members, &lw->cap_members, g->nmembers + n, sizeof *g->members);
+		memcpy(g->members + g->nmembers, kids, n * sizeof *kids);
+		node.first = (uint32_t)g->nmembers;
+		node.count = n;
+		g->nmembers += n;
+		index = add_part(lw, &node);
+	}
+	free(kids);
+	return index;
+}
+
+/* The part tree of object i (a solid, or a disc or an open cylinder or cone at the top),
+ * inverted when invert; its root's index, or -1 when it is not drawn (with a warning when
+ * a transform makes it too small or too large to compute with). */
+static int64_t lower_part(struct lowering *lw, size_t i, bool invert)
+{
+	const struct object_desc *o = &lw->desc->objects[i];
+	struct affine x = o->xform >= 0 ? affine_of(&lw->desc->xforms[o->xform]) : affine_identity;
+	struct part p;
+	bool ok = true;
+	switch (o->kind) {
+	case OBJ_SPHERE:
+		ok = part_make_sphere(&p, v3a(o->u.sphere.center), o->u.sphere.radius, &x);
+		break;
+	case OBJ_PLANE:
+		ok = part_make_plane(&p, v3a(o->u.plane.normal), o->u.plane.offset, &x);
+		break;
+	case OBJ_BOX:
+		ok = part_make_box(&p, v3a(o->u.box.corner[0]), v3a(o->u.box.corner[1]), &x);
+		break;
+	case OBJ_CYLINDER: case OBJ_CONE:
+		ok = part_make_cone(&p, v3a(o->u.cone.base), o->u.cone.radius[0], v3a(o->u.cone.cap), o->u.cone.radius[1],
+		                    o->open, &x);
+		break;
+	case OBJ_DISC:
+		ok = part_make_disc(&p, v3a(o->u.disc.center), v3a(o->u.disc.normal), o->u.disc.radius, o->u.disc.hole, &x);
+		break;
+	case OBJ_TORUS:
+		ok = part_make_torus(&p, o->u.torus.major, o->u.torus.minor, &x);
+		break;
+	case OBJ_CSG:
+		return lower_csg(lw, i, invert);
+	case OBJ_TRIANGLE: case OBJ_MESH:
+		diag_error(lw->diag, o->span, "a %s cannot be a solid's part yet", object_names[o->kind]);
+		return -1;
+	}
+	if (!ok) {
+		diag_warning(lw->diag, o->span, "this %s's transforms make it too small or too large to compute with: "
+		             "it is not drawn", object_names[o->kind]);
+		return -1;
+	}
+	p.inverse = o->inverse != invert;
+	p.surface = add_surface(lw, o);
+	return add_part(lw, &p);
+}
+
+/* Object i as a solid of the scene: its part tree, bounded or not. */
+static void lower_solid(struct lowering *lw, size_t i)
+{
+	const struct object_desc *o = &lw->desc->objects[i];
+	int64_t root = lower_part(lw, i, false);
+	if (root < 0)
+		return;
+	struct geometry *g = &lw->sc->geo;
+	struct vec3 slo, shi;
+	csg_bound(g, (uint32_t)root, &slo, &shi);
+	struct vec3 lo = g->parts[root].lo, hi = g->parts[root].hi;
+	if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) {
+		diag_warning(lw->diag, o->span, "this %s is empty: its members do not overlap", object_names[o->kind]);
+		return;
+	}
+	double extent = fmax(vmaxc(vabs(lo)), vmaxc(vabs(hi)));
+	if (isfinite(extent)) {
+		check_extent(lw, o->span, "this object", extent);
+		xgrow((void **)&g->solids, &lw->cap_solids, g->nsolids + 1, sizeof *g->solids);
+		g->solids[g->nsolids++] = (uint32_t)root;
+	} else {
+		xgrow((void **)&g->unbounded, &lw->cap_unbounded, g->nunbounded + 1, sizeof *g->unbounded);
+		g->unbounded[g->nunbounded++] = (uint32_t)root;
+	}
+}
+
+/* Whether x scales every direction alike (rotations, mirrors and uniform scales): its
+ * columns orthogonal and of one length, up to rounding. A sphere under it stays a sphere. */
+static bool conformal(const struct xform *x)
+{
+	double c[3][3], len[3];
+	for (int j = 0; j < 3; j++) {
+		for (int i = 0; i < 3; i++)
+			c[j][i] = x->m[i][j];
+		len[j] = sqrt(c[j][0] * c[j][0] + c[j][1] * c[j][1] + c[j][2] * c[j][2]);
+	}
+	const double tol = 1e-12;
+	for (int j = 0; j < 3; j++) {
+		int k = (j + 1) % 3;
+		if (fabs(len[j] - len[k]) > tol * len[j] ||
+		    fabs(c[j][0] * c[k][0] + c[j][1] * c[k][1] + c[j][2] * c[k][2]) > tol * len[j] * len[k])
+			return false;
+	}
+	return true;
+}
+
+/* Object i of the scene's top level, or of a union there: a union is not an object of
+ * its own (POV-Ray's split_union), but a union under inverse is a solid. */
+static void lower_object(struct lowering *lw, size_t i)
 {
 	struct scene *sc = lw->sc;
+	const struct object_desc *o = &lw->desc->objects[i];
 	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
 	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
+	bool solid = o->inverse || (o->kind == OBJ_SPHERE && !conformal(x)) ||
+	             (o->kind != OBJ_SPHERE && o->kind != OBJ_PLANE && o->kind != OBJ_TRIANGLE && o->kind != OBJ_MESH);
+	if (o->kind == OBJ_CSG && o->u.csg.op == CSG_UNION && !o->inverse) {
+		for (size_t j = i + 1; j < next_object(lw->desc, i); j = next_object(lw->desc, j))
+			lower_object(lw, j);
+		return;
+	}
+	if (solid) {
+		lower_solid(lw, i);
+		return;
+	}
 	switch (o->kind) {
 	case OBJ_SPHERE: {
-		/* only uniform scales reach a sphere: any column's length is the scale */
+		/* a scale alike in every direction: any column's length is the scale */
 		double scale = hypot(hypot(x->m[0][0], x->m[1][0]), x->m[2][0]); /* no underflow at 1e-250 */
 		struct sphere s = { xform_point(x, v3a(o->u.sphere.center)), o->u.sphere.radius * scale, 0 };
 		check_extent(lw, o->span, "this sphere", extent_of(s.center) + s.radius);
@@ -419,7 +557,7 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 	case OBJ_PLANE: {
 		struct vec3 n = vunit(v3a(o->u.plane.normal));
 		struct vec3 on = xform_point(x, vscale(n, o->u.plane.offset)); /* a point of the plane */
-		struct affine inv = affine_inverse(x);
+		struct affine inv = xform_inverse(x);
 		struct vec3 wn = vunit(affine_normal(&inv, n));
 		xgrow((void **)&sc->geo.planes, &lw->cap_planes, sc->geo.nplanes + 1, sizeof *sc->geo.planes);
 		struct plane *p = &sc->geo.planes[sc->geo.nplanes++];
@@ -449,6 +587,8 @@ static void lower_object(struct lowering *lw, const struct object_desc *o)
 	}
 	case OBJ_MESH:
 		lower_mesh(lw, o, &o->span);
+		break;
+	default:
 		break;
 	}
 }
@@ -518,7 +658,7 @@ static void warn_enclosed_lights(struct lowering *lw)
 static void warn_dark(struct lowering *lw)
 {
 	const struct scene *sc = lw->sc;
-	if (!sc->geo.nspheres && !sc->geo.nplanes && !sc->geo.ntriangles) {
+	if (!sc->geo.nspheres && !sc->geo.nplanes && !sc->geo.ntriangles && !sc->geo.nsolids && !sc->geo.nunbounded) {
 		diag_plain(lw->diag, DIAG_WARNING, "the scene has no objects: its image is the sky alone");
 		return;
 	}
@@ -560,8 +700,8 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	lw.material_map = xmalloc((desc->nmaterials ? desc->nmaterials : 1) * sizeof *lw.material_map);
 	for (size_t i = 0; i < desc->nmaterials; i++)
 		lw.material_map[i] = -1;
-	for (size_t i = 0; i < desc->nobjects && !too_big; i++)
-		lower_object(&lw, &desc->objects[i]);
+	for (size_t i = 0; i < desc->nobjects && !too_big; i = next_object(desc, i))
+		lower_object(&lw, i);
 	out->geo.transmit = xcalloc(out->nmaterials, sizeof *out->geo.transmit);
 	for (size_t m = 0; m < out->nmaterials; m++)
 		out->geo.transmit[m] = out->materials[m].transmit;
@@ -586,7 +726,8 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 		mesh_import_free(&lw.mesh_cache[i].data);
 	free(lw.mesh_cache);
 	free(lw.material_map);
-	if (out->geo.nspheres + out->geo.ntriangles + out->geo.nplanes >= (1u << SHAPE_KIND_SHIFT)) {
+	if (out->geo.nspheres + out->geo.ntriangles + out->geo.nplanes + out->geo.nsolids >= (1u << SHAPE_KIND_SHIFT) ||
+	    out->geo.nunbounded >= SHAPE_UNBOUNDED) {
 		diag_plain(d, DIAG_ERROR, "the scene has more than 2^30 primitives");
 		return LOAD_SCENE_ERROR;
 	}

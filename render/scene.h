@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "accel.h"
+#include "affine.h"
 #include "camera.h"
 #include "geometry.h"
 #include "image.h"
@@ -33,28 +34,6 @@ struct material {
 	struct vec3 specular, reflect, transmit, emit;
 	double shininess, ior;
 };
-
-/* An affine map p -> m[.][0..2] p + m[.][3]. */
-struct affine {
-	double m[3][4];
-};
-
-/* p under a. */
-static inline struct vec3 affine_point(const struct affine *a, struct vec3 p)
-{
-	return v3(a->m[0][0] * p.x + a->m[0][1] * p.y + a->m[0][2] * p.z + a->m[0][3],
-	          a->m[1][0] * p.x + a->m[1][1] * p.y + a->m[1][2] * p.z + a->m[1][3],
-	          a->m[2][0] * p.x + a->m[2][1] * p.y + a->m[2][2] * p.z + a->m[2][3]);
-}
-
-/* n under the transpose of a's linear part: a normal under the map whose inverse is a
- * (normals transform by the inverse transpose); not normalised. */
-static inline struct vec3 affine_normal(const struct affine *a, struct vec3 n)
-{
-	return v3(a->m[0][0] * n.x + a->m[1][0] * n.y + a->m[2][0] * n.z,
-	          a->m[0][1] * n.x + a->m[1][1] * n.y + a->m[2][1] * n.z,
-	          a->m[0][2] * n.x + a->m[1][2] * n.y + a->m[2][2] * n.z);
-}
 
 /* An object made of a mesh file, as lowering placed it: its triangles are those of surface,
  * in world space, where to_world put the file's vertices (to_object maps back). Uses with

@@ -141,7 +141,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 		return trace_sky(&sc->sky, r->d);
 	struct surface_point sp;
 	shape_surface_at(&sc->geo, r, &h, &sp);
-	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, h.prim)];
+	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, &h)];
 	const struct material *m = &sc->materials[srf->material];
 
 	/* the shading normal turned towards the viewer; inside or outside from the

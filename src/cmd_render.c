@@ -175,8 +175,9 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 	        "  render %.3fs  write %.3fs\n",
 	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, sc->accel.grid ? "grid" : "bvh", bvh_s,
 	        render_s, write_s);
-	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu lights, %zu materials; ", sc->geo.nspheres,
-	        sc->geo.nplanes, sc->geo.ntriangles, sc->nlights, sc->nmaterials);
+	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu solids of %zu parts, %zu lights, %zu materials; ",
+	        sc->geo.nspheres, sc->geo.nplanes, sc->geo.ntriangles, sc->geo.nsolids + sc->geo.nunbounded,
+	        sc->geo.nparts, sc->nlights, sc->nmaterials);
 	if (sc->accel.grid) {
 		int cells[3];
 		size_t refs;

@@ -67,12 +67,13 @@ struct task {
  * each instead of 1.5 (a leaf's box around small spheres far apart is mostly empty), with
  * no faster a render. */
 struct sah {
-	unsigned node, sphere, packet;
+	unsigned node, sphere, packet, solid;
 };
 
 static inline double leaf_price(const struct sah *sah, struct kinds k)
 {
-	return (double)k.n[SHAPE_SPHERE] * sah->sphere + (double)leaf_packets(k.n[SHAPE_TRIANGLE]) * sah->packet;
+	return (double)k.n[SHAPE_SPHERE] * sah->sphere + (double)leaf_packets(k.n[SHAPE_TRIANGLE]) * sah->packet +
+	       (double)k.n[SHAPE_SOLID] * sah->solid;
 }
 
 /* The binary tree goes to bin, one slot per place a split can fall: the node that
@@ -340,13 +341,14 @@ static void make_chunk(void *ctx, size_t c)
 struct bvh *bvh_build(const struct geometry *geo, bool one_leaf)
 {
 	struct bvh *bvh = xcalloc(1, sizeof *bvh);
-	size_t n = geo->nspheres + geo->ntriangles;
+	size_t n = shape_count(geo);
 	bvh->nprims = n;
 	bvh->big = n >= BVH_BIG_TREE;
 	if (n == 0)
 		return bvh;
 	struct builder b = { .brute = one_leaf };
-	b.sah = bvh->big ? (struct sah){ 2, 2, 2 } : (struct sah){ 1, 1, 2 };
+	/* a solid's test maps the ray into its own space first: two or three spheres' worth */
+	b.sah = bvh->big ? (struct sah){ 2, 2, 2, 4 } : (struct sah){ 1, 1, 2, 2 };
 	b.refs = xmalloc(n * sizeof *b.refs);
 	bvh->prims = b.prims = xmalloc(n * sizeof *b.prims);
 	/* the records in chunks, on all threads where the build will use them */

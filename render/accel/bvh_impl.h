@@ -99,20 +99,20 @@ static inline float vbox_area(struct vbox b)
 	return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
 }
 
-/* How many spheres and triangles a set holds: what its price as a leaf depends on. */
+/* How many spheres, triangles and solids a set holds: what its price as a leaf depends on. */
 struct kinds {
-	uint32_t n[2]; /* n[SHAPE_SPHERE], n[SHAPE_TRIANGLE] */
+	uint32_t n[4]; /* by enum shape_kind (planes are never counted) */
 };
 
 static inline void kinds_add(struct kinds *a, struct kinds b)
 {
-	a->n[0] += b.n[0];
-	a->n[1] += b.n[1];
+	for (int k = 0; k < 4; k++)
+		a->n[k] += b.n[k];
 }
 
 static inline uint32_t kinds_total(struct kinds k)
 {
-	return k.n[0] + k.n[1];
+	return k.n[0] + k.n[1] + k.n[2] + k.n[3];
 }
 
 /* The wide tree of the binary one, which it frees: sets bvh's nodes, nnodes, nboxes and

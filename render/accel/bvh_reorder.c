@@ -134,21 +134,22 @@ static void finalize_leaves(struct bvh *b, const struct geometry *geo)
 }
 
 /* The scene's primitives copied in leaf order, on every thread: prims cut into chunks,
- * each chunk's spheres and triangles counted, then copied from where the chunks before
+ * each chunk's spheres, triangles and solids counted, then copied from where the chunks before
  * it end, each entry of prims renumbered to its primitive's new place. */
 struct reordering {
 	struct bvh *b;
 	const struct geometry *geo;       /* the primitives where they were */
 	struct sphere *spheres;
 	struct triangle *triangles;
+	uint32_t *solids;
 	size_t nchunks;
-	struct kinds *first;          /* chunk c's first sphere and triangle (its counts, until the sum) */
+	struct kinds *first;          /* chunk c's first of each kind (its counts, until the sum) */
 };
 
 static void count_kinds(void *ctx, size_t c)
 {
 	struct reordering *ro = ctx;
-	struct kinds k = { { 0, 0 } };
+	struct kinds k = { { 0 } };
 	size_t lo, hi;
 	parallel_chunk_items(ro->b->nprims, ro->nchunks, c, &lo, &hi);
 	for (size_t i = lo; i < hi; i++)
@@ -168,8 +169,10 @@ static void copy_chunk(void *ctx, size_t c)
 		uint32_t k = shape_index(prims[i]), to = next.n[kind]++;
 		if (kind == SHAPE_SPHERE)
 			ro->spheres[to] = ro->geo->spheres[k];
-		else
+		else if (kind == SHAPE_TRIANGLE)
 			ro->triangles[to] = ro->geo->triangles[k];
+		else
+			ro->solids[to] = ro->geo->solids[k];
 		prims[i] = shape_id(kind, to);
 	}
 }
@@ -179,9 +182,10 @@ void bvh_reorder(struct bvh *b, struct geometry *geo)
 	struct kinds first[MAX_CHUNKS];
 	struct reordering ro = { b, geo, geo->nspheres ? xmalloc(geo->nspheres * sizeof *ro.spheres) : NULL,
 		                 geo->ntriangles ? xmalloc(geo->ntriangles * sizeof *ro.triangles) : NULL,
+		                 geo->nsolids ? xmalloc(geo->nsolids * sizeof *ro.solids) : NULL,
 		                 parallel_chunks(b->nprims), first };
 	parallel_for(ro.nchunks, count_kinds, &ro);
-	struct kinds sum = { { 0, 0 } };
+	struct kinds sum = { { 0 } };
 	for (size_t c = 0; c < ro.nchunks; c++) {
 		struct kinds count = first[c];
 		first[c] = sum;
@@ -190,7 +194,9 @@ void bvh_reorder(struct bvh *b, struct geometry *geo)
 	parallel_for(ro.nchunks, copy_chunk, &ro);
 	free(geo->spheres);
 	free(geo->triangles);
+	free(geo->solids);
 	geo->spheres = ro.spheres;
 	geo->triangles = ro.triangles;
+	geo->solids = ro.solids;
 	finalize_leaves(b, geo);
 }

@@ -22,7 +22,7 @@ enum {
 };
 
 #define MULTI_CELL (1u << 31) /* on a reference: the primitive is listed in several cells
-                               * (free: the ids of spheres and triangles leave bit 31 clear) */
+                               * (free: the ids an accelerator holds leave bit 31 clear) */
 
 struct grid {
 	double lo[3], hi[3];
@@ -113,7 +113,7 @@ uint64_t grid_bytes(uint64_t n)
 struct grid *grid_build(const struct geometry *geo)
 {
 	struct grid *g = xcalloc(1, sizeof *g);
-	size_t n = geo->nspheres + geo->ntriangles;
+	size_t n = shape_count(geo);
 	if (n == 0)
 		return g;
 	struct box *boxes = xcalloc(n, sizeof *boxes);
@@ -408,7 +408,7 @@ struct vec3 grid_transmittance(const struct grid *g, const struct geometry *geo,
 		return pass;
 	/* more distinct primitives than the mailbox holds: every primitive, once each */
 	pass = planes;
-	for (size_t i = 0; i < geo->nspheres + geo->ntriangles && !vzero(pass); i++)
+	for (size_t i = 0; i < shape_count(geo) && !vzero(pass); i++)
 		pass = shape_filter(geo, shape_nth(geo, i), r, &tr, tmax, pass);
 	return pass;
 }

@@ -12,6 +12,10 @@ void geometry_free(struct geometry *g)
 	free(g->normals);
 	free(g->triangles);
 	free(g->surfaces);
+	free(g->parts);
+	free(g->members);
+	free(g->solids);
+	free(g->unbounded);
 	free(g->transmit);
 	memset(g, 0, sizeof *g);
 }

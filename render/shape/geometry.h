@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "part.h"
 #include "plane.h"
 #include "sphere.h"
 #include "triangle.h"
@@ -31,6 +32,17 @@ struct geometry {
 	size_t ntriangles;
 	struct surface *surfaces;
 	size_t nsurfaces;
+	/* the solids (csg.h): each a tree of parts; the bounded ones are primitives of the
+	 * accelerators, the unbounded ones (a plane among their members) are tested beside
+	 * them, as planes are */
+	struct part *parts;
+	size_t nparts;
+	uint32_t *members;             /* the CSG nodes' members, into parts */
+	size_t nmembers;
+	uint32_t *solids;              /* the bounded solids' root parts */
+	size_t nsolids;
+	uint32_t *unbounded;           /* the unbounded solids' root parts */
+	size_t nunbounded;
 	/* each material's k_t (scene.materials[m].transmit), for the shadow filter, which
 	 * multiplies the k_t of every surface a shadow ray crosses: a copy, so that the
 	 * accelerators that filter need no materials */

@@ -15,6 +15,7 @@ struct ray {
 struct hit {
 	double t;
 	uint32_t prim;                 /* the shape's id (shape.h) */
+	uint32_t part;                 /* a solid's: the leaf part whose surface it is (part.h) */
 	double b1, b2;                 /* triangle: barycentric weights of vertices 1 and 2 */
 };
 

@@ -1,14 +1,45 @@
-/* shape.c: the dispatch by shape id (shape.h) that is not inline: bounds, surfaces, and
- * the planes, which every ray tests beside the accelerator. */
+/* shape.c: the dispatch by shape id (shape.h) that is not inline: bounds, surfaces, the
+ * solids, and the planes and unbounded solids, which every ray tests beside the
+ * accelerator. */
 #include "shape.h"
 
 void shape_bounds(const struct geometry *g, uint32_t id, struct vec3 *lo, struct vec3 *hi)
 {
 	uint32_t i = shape_index(id);
-	if (shape_kind(id) == SHAPE_SPHERE)
+	switch (shape_kind(id)) {
+	case SHAPE_SPHERE:
 		sphere_bounds(&g->spheres[i], lo, hi);
-	else
+		break;
+	case SHAPE_TRIANGLE:
 		triangle_bounds(&g->triangles[i], g->vertices, lo, hi);
+		break;
+	default: {
+		const struct part *p = &g->parts[shape_solid_root(g, id)];
+		*lo = p->lo;
+		*hi = p->hi;
+	}
+	}
+}
+
+bool shape_solid_intersect(const struct geometry *g, uint32_t id, const struct ray *r, struct hit *h)
+{
+	struct csg_hit c;
+	if (!csg_next(g, shape_solid_root(g, id), r, 0, h->t, &c))
+		return false;
+	h->t = c.t;
+	h->prim = id;
+	h->part = c.leaf;
+	return true;
+}
+
+struct vec3 shape_solid_filter(const struct geometry *g, uint32_t id, const struct ray *r, double tmax,
+                               struct vec3 pass)
+{
+	uint32_t root = shape_solid_root(g, id);
+	struct csg_hit c;
+	for (double t0 = 0; !vzero(pass) && csg_next(g, root, r, t0, tmax, &c); t0 = c.t)
+		pass = vmul(pass, shape_transmit(g, g->parts[c.leaf].surface));
+	return pass;
 }
 
 void shape_surface_at(const struct geometry *g, const struct ray *r, const struct hit *h, struct surface_point *sp)
@@ -23,6 +54,9 @@ void shape_surface_at(const struct geometry *g, const struct ray *r, const struc
 		break;
 	case SHAPE_TRIANGLE:
 		triangle_surface(&g->triangles[i], g->vertices, g->normals, h, sp);
+		break;
+	case SHAPE_SOLID:
+		part_surface(&g->parts[h->part], r, h->t, sp);
 		break;
 	}
 }
@@ -44,6 +78,8 @@ bool shape_planes_intersect(const struct geometry *g, const struct ray *r, struc
 			h->prim = shape_id(SHAPE_PLANE, (uint32_t)i);
 			hit = true;
 		}
+	for (size_t i = 0; i < g->nunbounded; i++)
+		hit |= shape_solid_intersect(g, shape_id(SHAPE_SOLID, SHAPE_UNBOUNDED | (uint32_t)i), r, h);
 	return hit;
 }
 
@@ -58,5 +94,7 @@ struct vec3 shape_planes_filter(const struct geometry *g, const struct ray *r, d
 				return pass;
 		}
 	}
+	for (size_t i = 0; i < g->nunbounded && !vzero(pass); i++)
+		pass = shape_solid_filter(g, shape_id(SHAPE_SOLID, SHAPE_UNBOUNDED | (uint32_t)i), r, tmax, pass);
 	return pass;
 }

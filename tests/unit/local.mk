@@ -43,3 +43,7 @@ check_PROGRAMS += tests/unit/test_crash
 TESTS += tests/unit/test_crash
 tests_unit_test_crash_SOURCES = tests/unit/test_crash.c
 tests_unit_test_crash_LDADD = $(SCN_LIBS)
+check_PROGRAMS += tests/unit/test_csg
+TESTS += tests/unit/test_csg
+tests_unit_test_csg_SOURCES = tests/unit/test_csg.c
+tests_unit_test_csg_LDADD = $(SCN_LIBS)

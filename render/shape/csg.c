@@ -1,0 +1,141 @@
+/* csg.c: the CSG of part.h's nodes (csg.h). A node's visible surfaces are found member by
+ * member, each member's surfaces in order along the ray until one counts; for a node of
+ * PART_INTERSECT a member's surface counts where the other members hold the point just
+ * inside it, for PART_MERGE where none holds the point just outside it (POV-Ray's
+ * Inside_Object tests at the point itself, which on a shared face is decided by rounding:
+ * speckle). */
+#include "csg.h"
+
+#include <math.h>
+
+#include "geometry.h"
+
+/* How far the point of an inside test is moved off a surface, in multiples of the hit
+ * point's error bound: far enough that rounding cannot put it on the wrong side of a
+ * surface that coincides with this one, and far below a pixel's footprint. */
+#define NUDGE 1024.0
+/* Two members' surfaces closer than this many times their error bounds (along the
+ * normal) are one surface, shown by the earlier member. */
+#define SAME_SURFACE 1024.0
+/* How far past the closest surface so far a member's surface is still looked at, for
+ * that rule: a relative margin far above the t of two coinciding surfaces' difference. */
+#define TIE_MARGIN 0x1p-20
+
+/* Whether r may meet the box [lo, hi] at a t in [t0, t1]: slabs in double, a NaN from a
+ * zero direction on a slab plane discarded by fmax and fmin. */
+static bool box_meets(struct vec3 lo, struct vec3 hi, const struct ray *r, double t0, double t1)
+{
+	for (int k = 0; k < 3; k++) {
+		double inv = 1 / vget(&r->d, k), o = vget(&r->o, k);
+		double a = (vget(&lo, k) - o) * inv, b = (vget(&hi, k) - o) * inv;
+		if (a > b) {
+			double s = a;
+			a = b;
+			b = s;
+		}
+		t0 = fmax(t0, a);
+		t1 = fmin(t1, b * (1 + 2 * rounding_gamma(3)));
+	}
+	return t0 <= t1;
+}
+
+bool csg_inside(const struct geometry *g, uint32_t part, struct vec3 q)
+{
+	const struct part *p = &g->parts[part];
+	if (p->kind != PART_CSG)
+		return part_inside_leaf(p, q);
+	bool all = p->op == PART_INTERSECT;
+	for (uint32_t k = 0; k < p->count; k++)
+		if (csg_inside(g, g->members[p->first + k], q) != all)
+			return !all;
+	return all;
+}
+
+/* Whether the surface sp of member k of node p counts: see the file's comment. */
+static bool counts(const struct geometry *g, const struct part *p, uint32_t k, const struct surface_point *sp)
+{
+	if (p->op == PART_ALL)
+		return true;
+	double nudge = NUDGE * vmaxc(sp->p_err) + 0x1p-1000;
+	bool intersect = p->op == PART_INTERSECT;
+	struct vec3 q = vmad(sp->p, intersect ? -nudge : nudge, sp->ng);
+	for (uint32_t j = 0; j < p->count; j++)
+		if (j != k && csg_inside(g, g->members[p->first + j], q) != intersect)
+			return false;
+	return true;
+}
+
+bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, double t_after, double tmax,
+              struct csg_hit *out)
+{
+	const struct part *p = &g->parts[part];
+	if (p->kind != PART_CSG) {
+		double t[4];
+		int n = part_crossings(p, r, tmax, t);
+		for (int i = 0; i < n; i++)
+			if (t[i] > t_after) {
+				*out = (struct csg_hit){ t[i], part };
+				return true;
+			}
+		return false;
+	}
+	bool found = false;
+	double best_err = 0;           /* the best surface's error along its normal */
+	for (uint32_t k = 0; k < p->count; k++) {
+		uint32_t m = g->members[p->first + k];
+		double limit = found ? fmin(tmax, out->t * (1 + TIE_MARGIN)) : tmax;
+		if (!box_meets(g->parts[m].lo, g->parts[m].hi, r, t_after, limit))
+			continue;
+		struct csg_hit c;
+		for (double t0 = t_after; csg_next(g, m, r, t0, limit, &c); t0 = c.t) {
+			struct surface_point sp;
+			part_surface(&g->parts[c.leaf], r, c.t, &sp);
+			if (!counts(g, p, k, &sp))
+				continue;
+			double err = vdot(vabs(sp.ng), sp.p_err);
+			if (!found || c.t < out->t) {
+				/* nearer, unless it is the best's own surface and a later member's */
+				bool same = found && (out->t - c.t) * fabs(vdot(r->d, sp.ng)) <= SAME_SURFACE * (err + best_err);
+				if (!same || c.leaf < out->leaf) {
+					*out = c;
+					best_err = err;
+					found = true;
+				}
+			} else if (c.leaf < out->leaf &&
+			           (c.t - out->t) * fabs(vdot(r->d, sp.ng)) <= SAME_SURFACE * (err + best_err)) {
+				*out = c;
+				best_err = err;
+			}
+			break;
+		}
+	}
+	return found;
+}
+
+void csg_bound(struct geometry *g, uint32_t part, struct vec3 *solid_lo, struct vec3 *solid_hi)
+{
+	struct part *p = &g->parts[part];
+	if (p->kind != PART_CSG) {
+		bool everywhere = p->inverse || p->kind == PART_PLANE;
+		*solid_lo = everywhere ? v3s(-INFINITY) : p->lo;
+		*solid_hi = everywhere ? v3s(INFINITY) : p->hi;
+		return;
+	}
+	bool intersect = p->op == PART_INTERSECT;
+	struct vec3 lo = v3s(INFINITY), hi = v3s(-INFINITY);
+	*solid_lo = v3s(intersect ? -INFINITY : INFINITY);
+	*solid_hi = v3s(intersect ? INFINITY : -INFINITY);
+	for (uint32_t k = 0; k < p->count; k++) {
+		uint32_t m = g->members[p->first + k];
+		struct vec3 slo, shi;
+		csg_bound(g, m, &slo, &shi);
+		p = &g->parts[part];
+		lo = vmin(lo, g->parts[m].lo);
+		hi = vmax(hi, g->parts[m].hi);
+		*solid_lo = intersect ? vmax(*solid_lo, slo) : vmin(*solid_lo, slo);
+		*solid_hi = intersect ? vmin(*solid_hi, shi) : vmax(*solid_hi, shi);
+	}
+	/* an intersection's surfaces lie within every member */
+	p->lo = intersect ? vmax(lo, *solid_lo) : lo;
+	p->hi = intersect ? vmin(hi, *solid_hi) : hi;
+}
