@@ -635,8 +635,8 @@ static bool lower_sky(struct lowering *lw)
 	return true;
 }
 
-/* Warns about point lights inside a sphere: they light nothing outside it unless it
- * transmits. */
+/* Warns about point lights inside a sphere or another solid: they light nothing outside
+ * it unless it transmits. */
 static void warn_enclosed_lights(struct lowering *lw)
 {
 	const struct scene_desc *d = lw->desc;
@@ -645,11 +645,21 @@ static void warn_enclosed_lights(struct lowering *lw)
 		if (d->lights[i].directional)
 			continue;
 		struct vec3 p = v3a(d->lights[i].vec);
-		for (size_t s = 0; s < sc->geo.nspheres; s++)
+		bool warned = false;
+		for (size_t s = 0; s < sc->geo.nspheres && !warned; s++)
 			if (vlen(vsub(p, sc->geo.spheres[s].center)) < sc->geo.spheres[s].radius) {
 				diag_warning(lw->diag, d->lights[i].span, "this light is inside a sphere");
-				break;
+				warned = true;
 			}
+		for (size_t s = 0; s < sc->geo.nsolids + sc->geo.nunbounded && !warned; s++) {
+			uint32_t root = s < sc->geo.nsolids ? sc->geo.solids[s] : sc->geo.unbounded[s - sc->geo.nsolids];
+			const struct part *top = &sc->geo.parts[root];
+			bool flat = top->kind == PART_DISC || (top->kind == PART_CONE && top->open); /* no inside */
+			if (!flat && csg_inside(&sc->geo, root, p)) {
+				diag_warning(lw->diag, d->lights[i].span, "this light is inside a solid object");
+				warned = true;
+			}
+		}
 	}
 }
 
