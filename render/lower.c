@@ -29,7 +29,7 @@ struct lowering {
 	const struct scene_desc *desc;
 	struct scene *sc;
 	size_t cap_surfaces, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
-	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded;
+	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded, cap_part_triangles;
 	int *material_map;             /* desc material -> scene material, or -1 */
 	int default_material;          /* the scene material for objects without one, or -1 */
 	struct mesh_cache_entry *mesh_cache;
@@ -145,16 +145,19 @@ static double extent_of(struct vec3 p)
 	return vmaxc(vabs(p));
 }
 
-/* Adds a triangle unless it has no area (NUMERICS.md section 5); returns whether it did. */
-static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_t n[3], uint32_t surface)
+/* Adds a triangle unless it has no area (NUMERICS.md section 5), to the scene's or, with
+ * part, to the mesh parts' triangles; returns whether it did. */
+static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_t n[3], uint32_t surface, bool part)
 {
 	struct scene *sc = lw->sc;
 	struct vec3 a = sc->geo.vertices[v[0]], b = sc->geo.vertices[v[1]], c = sc->geo.vertices[v[2]];
 	struct vec3 area = vcross(vsub(b, a), vsub(c, a));
 	if (vzero(area) || !isfinite(area.x) || !isfinite(area.y) || !isfinite(area.z))
 		return false;
-	xgrow((void **)&sc->geo.triangles, &lw->cap_triangles, sc->geo.ntriangles + 1, sizeof *sc->geo.triangles);
-	struct triangle *t = &sc->geo.triangles[sc->geo.ntriangles++];
+	struct triangle **list = part ? &sc->geo.part_triangles : &sc->geo.triangles;
+	size_t *n_list = part ? &sc->geo.npart_triangles : &sc->geo.ntriangles;
+	xgrow((void **)list, part ? &lw->cap_part_triangles : &lw->cap_triangles, *n_list + 1, sizeof **list);
+	struct triangle *t = &(*list)[(*n_list)++];
 	memcpy(t->v, v, sizeof t->v);
 	memcpy(t->n, n, sizeof t->n);
 	t->surface = surface;
@@ -290,12 +293,15 @@ static void warn_no_area(struct lowering *lw, struct span at, size_t dropped, si
 		             nfaces, why);
 }
 
-static void lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at)
+/* Mesh object o, as triangles of the scene, or with part (a solid's part, whose inside
+ * its inside_vector decides) as the triangles of that mesh part, whose range it sets;
+ * false when it is not drawn. */
+static bool lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at, struct part *part)
 {
 	struct mesh_data inline_data;
 	const struct mesh_data *data = mesh_data_of(lw, o, &inline_data);
 	if (!data)
-		return;
+		return false;
 	struct scene *sc = lw->sc;
 	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
 	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
@@ -310,7 +316,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	}
 	/* beyond it, its triangles' areas are lost to rounding: not the file's fault */
 	if (!check_extent(lw, *at, "this mesh", extent))
-		return;
+		return false;
 
 	uint32_t nbase = (uint32_t)sc->geo.nnormals;
 	if (o->smooth) {
@@ -338,7 +344,7 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		}
 		sc->geo.nnormals += data->nvertices;
 	}
-	size_t dropped = 0, coinciding = 0;
+	size_t dropped = 0, coinciding = 0, first = sc->geo.npart_triangles;
 	for (size_t f = 0; f < data->nfaces; f++) {
 		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
 		for (int k = 0; k < 3; k++) {
@@ -354,15 +360,24 @@ static void lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 			v[1] = v[2], n[1] = n[2];
 			v[2] = t, n[2] = tn;
 		}
-		if (!add_triangle(lw, v, n, surface)) {
+		if (!add_triangle(lw, v, n, surface, part != NULL)) {
 			dropped++;
 			coinciding += corners_coincide(sc->geo.vertices[v[0]], sc->geo.vertices[v[1]], sc->geo.vertices[v[2]]);
 		}
 	}
 	if (dropped)
 		warn_no_area(lw, *at, dropped, coinciding, data->nfaces);
+	if (part) {
+		const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
+		struct affine xa = affine_of(x);
+		struct vec3 w = vunit(affine_vector(&xa, v3a(m->inside_vector)));
+		*part = (struct part){ .kind = PART_MESH, .surface = surface, .first = (uint32_t)first,
+		                       .count = (uint32_t)(sc->geo.npart_triangles - first), .a = { w.x, w.y, w.z } };
+		return part->count > 0;
+	}
 	if (lw->desc->meshes[o->u.mesh.index].file)
 		add_mesh_use(lw, o, surface, x, &inv, mirrored);
+	return true;
 }
 
 /* The index of the object after object i and its members. */
@@ -458,8 +473,12 @@ static int64_t lower_part(struct lowering *lw, size_t i, bool invert)
 		break;
 	case OBJ_CSG:
 		return lower_csg(lw, i, invert);
-	case OBJ_TRIANGLE: case OBJ_MESH:
-		diag_error(lw->diag, o->span, "a %s cannot be a solid's part yet", object_names[o->kind]);
+	case OBJ_MESH:
+		if (!lower_mesh(lw, o, &o->span, &p))
+			return -1;
+		p.inverse = o->inverse != invert;
+		return add_part(lw, &p);
+	case OBJ_TRIANGLE: /* not a solid: the checks let none through */
 		return -1;
 	}
 	if (!ok) {
@@ -581,12 +600,12 @@ static void lower_object(struct lowering *lw, size_t i)
 			v[2] = t;
 		}
 		uint32_t surface = add_surface(lw, o);
-		if (!add_triangle(lw, v, n, surface))
+		if (!add_triangle(lw, v, n, surface, false))
 			sc->geo.nvertices -= 3; /* eval.c warned already */
 		break;
 	}
 	case OBJ_MESH:
-		lower_mesh(lw, o, &o->span);
+		lower_mesh(lw, o, &o->span, NULL);
 		break;
 	default:
 		break;

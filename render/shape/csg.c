@@ -39,9 +39,67 @@ static bool box_meets(struct vec3 lo, struct vec3 hi, const struct ray *r, doubl
 	return t0 <= t1;
 }
 
+/* The mesh part p's triangle that r meets first with t_after < t < tmax, or -1; *t set.
+ * Every triangle is tested (a mesh in a CSG has no accelerator of its own). */
+static int64_t mesh_next(const struct geometry *g, const struct part *p, const struct ray *r, double t_after,
+                         double tmax, double *t)
+{
+	struct triangle_ray tr;
+	triangle_ray_init(r, &tr);
+	int64_t best = -1;
+	*t = tmax;
+	for (uint32_t i = p->first; i < p->first + p->count; i++) {
+		struct hit h = { .t = INFINITY };
+		if (triangle_intersect(&tr, &g->part_triangles[i], g->vertices, &h) && h.t > t_after && h.t < *t) {
+			*t = h.t;
+			best = i;
+		}
+	}
+	return best;
+}
+
+void csg_surface(const struct geometry *g, uint32_t leaf, const struct ray *r, double t, struct surface_point *sp)
+{
+	const struct part *p = &g->parts[leaf];
+	if (p->kind != PART_MESH) {
+		part_surface(p, r, t, sp);
+		return;
+	}
+	/* the triangle hit at t: the one whose test gives that very t */
+	struct triangle_ray tr;
+	triangle_ray_init(r, &tr);
+	for (uint32_t i = p->first; i < p->first + p->count; i++) {
+		struct hit h = { .t = INFINITY };
+		if (triangle_intersect(&tr, &g->part_triangles[i], g->vertices, &h) && h.t == t) {
+			triangle_surface(&g->part_triangles[i], g->vertices, g->normals, &h, sp);
+			break;
+		}
+	}
+	if (p->inverse) {
+		sp->ng = vneg(sp->ng);
+		sp->ns = vneg(sp->ns);
+	}
+}
+
+/* Whether q is inside the mesh part p: an odd number of its triangles along a[0..2]. */
+static bool mesh_inside(const struct geometry *g, const struct part *p, struct vec3 q)
+{
+	struct ray r = { q, v3(p->a[0], p->a[1], p->a[2]) };
+	struct triangle_ray tr;
+	triangle_ray_init(&r, &tr);
+	bool in = false;
+	for (uint32_t i = p->first; i < p->first + p->count; i++) {
+		struct hit h = { .t = INFINITY };
+		in ^= triangle_intersect(&tr, &g->part_triangles[i], g->vertices, &h);
+	}
+	return in != p->inverse;
+}
+
 bool csg_inside(const struct geometry *g, uint32_t part, struct vec3 q)
 {
 	const struct part *p = &g->parts[part];
+	if (p->kind == PART_MESH)
+		return mesh_inside(g, p, q);
 	if (p->kind != PART_CSG)
 		return part_inside_leaf(p, q);
 	bool all = p->op == PART_INTERSECT;
@@ -69,6 +127,13 @@ bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, doub
               struct csg_hit *out)
 {
 	const struct part *p = &g->parts[part];
+	if (p->kind == PART_MESH) {
+		double t;
+		if (mesh_next(g, p, r, t_after, tmax, &t) < 0)
+			return false;
+		*out = (struct csg_hit){ t, part };
+		return true;
+	}
 	if (p->kind != PART_CSG) {
 		double t[4];
 		int n = part_crossings(p, r, tmax, t);
@@ -89,7 +154,7 @@ bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, doub
 		struct csg_hit c;
 		for (double t0 = t_after; csg_next(g, m, r, t0, limit, &c); t0 = c.t) {
 			struct surface_point sp;
-			part_surface(&g->parts[c.leaf], r, c.t, &sp);
+			csg_surface(g, c.leaf, r, c.t, &sp);
 			if (!counts(g, p, k, &sp))
 				continue;
 			double err = vdot(vabs(sp.ng), sp.p_err);
@@ -117,6 +182,16 @@ void csg_bound(struct geometry *g, uint32_t part, struct vec3 *solid_lo, struct 
 	struct part *p = &g->parts[part];
 	if (p->kind != PART_CSG) {
 		bool everywhere = p->inverse || p->kind == PART_PLANE;
+		if (p->kind == PART_MESH) { /* its bounds, from its triangles' */
+			p->lo = v3s(INFINITY);
+			p->hi = v3s(-INFINITY);
+			for (uint32_t i = p->first; i < p->first + p->count; i++) {
+				struct vec3 lo, hi;
+				triangle_bounds(&g->part_triangles[i], g->vertices, &lo, &hi);
+				p->lo = vmin(p->lo, lo);
+				p->hi = vmax(p->hi, hi);
+			}
+		}
 		*solid_lo = everywhere ? v3s(-INFINITY) : p->lo;
 		*solid_hi = everywhere ? v3s(INFINITY) : p->hi;
 		return;

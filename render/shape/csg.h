@@ -25,6 +25,9 @@ struct csg_hit {
  * members' surfaces at one place the earlier member's is the one seen. */
 bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, double t_after, double tmax,
               struct csg_hit *out);
+/* The surface of leaf `leaf` where r meets it at t (part_surface(), and for a mesh the
+ * triangle there). */
+void csg_surface(const struct geometry *g, uint32_t leaf, const struct ray *r, double t, struct surface_point *sp);
 /* Whether world point q lies inside part `part`. */
 bool csg_inside(const struct geometry *g, uint32_t part, struct vec3 q);
 

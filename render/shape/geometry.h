@@ -38,6 +38,8 @@ struct geometry {
 	struct part *parts;
 	size_t nparts;
 	uint32_t *members;             /* the CSG nodes' members, into parts */
+	struct triangle *part_triangles;   /* the triangles of mesh parts, which no accelerator holds */
+	size_t npart_triangles;
 	size_t nmembers;
 	uint32_t *solids;              /* the bounded solids' root parts */
 	size_t nsolids;

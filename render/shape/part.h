@@ -20,9 +20,11 @@
  *              radius 1 (a cylinder has both 1); end discs unless open
  * PART_DISC    y = 0, a[0]^2 <= x^2 + z^2 <= 1 (a[0] the hole's radius)
  * PART_TORUS   about the y axis: major radius a[0], minor a[1]
- * PART_PLANE   y <= 0 is inside, the normal +y
+ * PART_PLANE   in world space: p . n < a[3] is inside, n = a[0..2]
+ * PART_MESH    in world space: the closed mesh part_triangles[first .. first + count),
+ *              inside by the parity of its crossings along a[0..2] (POV-Ray's inside_vector)
  * PART_CSG     members[first .. first + count) combined by op */
-enum part_kind { PART_SPHERE, PART_BOX, PART_CONE, PART_DISC, PART_TORUS, PART_PLANE, PART_CSG };
+enum part_kind { PART_SPHERE, PART_BOX, PART_CONE, PART_DISC, PART_TORUS, PART_PLANE, PART_MESH, PART_CSG };
 
 /* How a CSG node counts its members' surfaces, with inversion pushed down to the leaves
  * (De Morgan, as POV-Ray inverts a CSG): a difference is an intersection whose members
@@ -40,14 +42,16 @@ struct part {
 	bool open;                     /* PART_CONE: no end discs */
 	bool moved;                    /* to_object is not the identity */
 	uint32_t surface;              /* a leaf's, into geometry.surfaces */
-	uint32_t first, count;         /* PART_CSG: its members, into geometry.members */
+	uint32_t first, count;         /* PART_CSG: its members, into geometry.members;
+	                                * PART_MESH: its triangles, into geometry.part_triangles */
 	double a[6];                   /* the canonical shape's numbers, above */
 	struct affine to_object;       /* world -> canonical space (when moved) */
 	struct affine to_world;        /* canonical -> world space (when moved) */
 	struct vec3 lo, hi;            /* world bounds, rounded outward; infinite when unbounded */
 };
 
-/* The t in (0, tmax) where r crosses leaf p's surface, ascending (at most 4); how many.
+/* The t in (0, tmax) where r crosses leaf p's surface (not a mesh: see csg.h), ascending
+ * (at most 4); how many.
  * A ray that starts on the surface (its origin offset by ray_offset_origin()) does not
  * cross it again at t ~ 0. */
 int part_crossings(const struct part *p, const struct ray *r, double tmax, double t[4]);

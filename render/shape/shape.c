@@ -56,7 +56,7 @@ void shape_surface_at(const struct geometry *g, const struct ray *r, const struc
 		triangle_surface(&g->triangles[i], g->vertices, g->normals, h, sp);
 		break;
 	case SHAPE_SOLID:
-		part_surface(&g->parts[h->part], r, h->t, sp);
+		csg_surface(g, h->part, r, h->t, sp);
 		break;
 	}
 }

@@ -217,6 +217,43 @@ static void test_inside(void)
 	geo.nparts = geo.nmembers = 0;
 }
 
+/* A closed mesh as a solid: the unit cube's twelve triangles, inside by parity along an
+ * inside_vector, minus a ball. */
+static void test_mesh(void)
+{
+	static struct vec3 vertices[8];
+	static struct triangle tris[12];
+	static const uint32_t faces[12][3] = { { 0, 2, 1 }, { 1, 2, 3 }, { 4, 5, 6 }, { 5, 7, 6 }, { 0, 1, 4 }, { 1, 5, 4 },
+	                                       { 2, 6, 3 }, { 3, 6, 7 }, { 0, 4, 2 }, { 2, 4, 6 }, { 1, 3, 5 }, { 3, 7, 5 } };
+	for (int i = 0; i < 8; i++)
+		vertices[i] = v3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+	for (int f = 0; f < 12; f++)
+		tris[f] = (struct triangle){ { faces[f][0], faces[f][1], faces[f][2] },
+		                             { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT }, 0 };
+	geo.vertices = vertices;
+	geo.part_triangles = tris;
+	uint32_t cube = add((struct part){ .kind = PART_MESH, .first = 0, .count = 12, .a = { 0.6, 0.48, 0.64 } });
+	struct vec3 lo, hi;
+	csg_bound(&geo, cube, &lo, &hi);
+	CHECK(csg_inside(&geo, cube, v3(0.3, -0.2, 0.9)));
+	CHECK(!csg_inside(&geo, cube, v3(1.3, -0.2, 0.9)));
+	CHECK_NEAR(closest(cube, ray(v3(0.2, 0.1, -4), v3(0, 0, 1))), 3, 1e-15);
+	/* its outward normals: the front face's points to -z */
+	struct ray r = ray(v3(0.2, 0.1, -4), v3(0, 0, 1));
+	struct surface_point sp;
+	csg_surface(&geo, cube, &r, 3, &sp);
+	CHECK_NEAR(sp.ng.z, -1, 1e-15);
+	struct part ball;
+	struct affine id = affine_identity;
+	CHECK(part_make_sphere(&ball, v3(0, 0, -1), 0.5, &id));
+	ball.inverse = true;
+	uint32_t dent = node(PART_INTERSECT, cube, add(ball));
+	/* through the dent: the ball's surface at z = -0.5, not the cube's face */
+	CHECK_NEAR(closest(dent, ray(v3(0, 0, -4), v3(0, 0, 1))), 3.5, 1e-15);
+	CHECK_NEAR(closest(dent, ray(v3(0.8, 0.8, -4), v3(0, 0, 1))), 3, 1e-15);
+	geo.nparts = geo.nmembers = 0;
+}
+
 int main(void)
 {
 	test_shapes();
@@ -224,5 +261,6 @@ int main(void)
 	test_flush_cutter();
 	test_coincident();
 	test_inside();
+	test_mesh();
 	return check_result();
 }
