@@ -29,7 +29,7 @@ struct lowering {
 	const struct scene_desc *desc;
 	struct scene *sc;
 	size_t cap_surfaces, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
-	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded, cap_part_triangles;
+	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded, cap_part_triangles, cap_csg_boxes;
 	int *material_map;             /* desc material -> scene material, or -1 */
 	int default_material;          /* the scene material for objects without one, or -1 */
 	struct mesh_cache_entry *mesh_cache;
@@ -495,12 +495,21 @@ static int64_t lower_part(struct lowering *lw, size_t i, bool invert)
 static void lower_solid(struct lowering *lw, size_t i)
 {
 	const struct object_desc *o = &lw->desc->objects[i];
+	struct geometry *g = &lw->sc->geo;
+	size_t first_part = g->nparts;
 	int64_t root = lower_part(lw, i, false);
 	if (root < 0)
 		return;
-	struct geometry *g = &lw->sc->geo;
 	struct vec3 slo, shi;
 	csg_bound(g, (uint32_t)root, &slo, &shi);
+	/* the nodes' member orders and hierarchies, members before the nodes they are in (the
+	 * order lower_part made them in) */
+	for (size_t k = first_part; k < g->nparts; k++)
+		if (g->parts[k].kind == PART_CSG) {
+			size_t room = 2 * (size_t)g->parts[k].count;
+			xgrow((void **)&g->csg_boxes, &lw->cap_csg_boxes, g->ncsg_boxes + room, sizeof *g->csg_boxes);
+			g->ncsg_boxes += csg_tree_build(g, &g->parts[k], g->csg_boxes + g->ncsg_boxes, (uint32_t)g->ncsg_boxes);
+		}
 	struct vec3 lo = g->parts[root].lo, hi = g->parts[root].hi;
 	if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) {
 		diag_warning(lw->diag, o->span, "this %s is empty: its members do not overlap", object_names[o->kind]);

@@ -95,6 +95,40 @@ static bool mesh_inside(const struct geometry *g, const struct part *p, struct v
 	return in != p->inverse;
 }
 
+/* Whether every member of node p but the one at position skip answers `wanted` to the
+ * inside test at q: the hard members always asked, the others only where their bounds
+ * hold q (outside, their answer is `wanted`: csg_tree.h), through the hierarchy when the
+ * node has one. */
+static bool members_all(const struct geometry *g, const struct part *p, uint32_t skip, struct vec3 q, bool wanted)
+{
+	const uint32_t *m = g->members + p->first;
+	for (uint32_t j = 0; j < p->hard; j++)
+		if (j != skip && (!csg_box_holds(g->parts[m[j]].lo, g->parts[m[j]].hi, q) || csg_inside(g, m[j], q) != wanted))
+			return false;
+	if (p->tree == CSG_NO_TREE) {
+		for (uint32_t j = p->hard; j < p->count; j++)
+			if (j != skip && csg_box_holds(g->parts[m[j]].lo, g->parts[m[j]].hi, q) && csg_inside(g, m[j], q) != wanted)
+				return false;
+		return true;
+	}
+	uint32_t stack[64], sp = 0;
+	stack[sp++] = p->tree;
+	while (sp) {
+		const struct csg_box *b = &g->csg_boxes[stack[--sp]];
+		if (!csg_box_holds(b->lo, b->hi, q))
+			continue;
+		if (!b->count) {
+			stack[sp++] = b->index;
+			stack[sp++] = b->index + 1;
+			continue;
+		}
+		for (uint32_t j = b->index; j < b->index + b->count; j++)
+			if (j != skip && csg_box_holds(g->parts[m[j]].lo, g->parts[m[j]].hi, q) && csg_inside(g, m[j], q) != wanted)
+				return false;
+	}
+	return true;
+}
+
 bool csg_inside(const struct geometry *g, uint32_t part, struct vec3 q)
 {
 	const struct part *p = &g->parts[part];
@@ -102,25 +136,62 @@ bool csg_inside(const struct geometry *g, uint32_t part, struct vec3 q)
 		return mesh_inside(g, p, q);
 	if (p->kind != PART_CSG)
 		return part_inside_leaf(p, q);
+	/* an intersection: inside all members; a union or merge: not outside all */
 	bool all = p->op == PART_INTERSECT;
-	for (uint32_t k = 0; k < p->count; k++)
-		if (csg_inside(g, g->members[p->first + k], q) != all)
-			return !all;
-	return all;
+	return members_all(g, p, UINT32_MAX, q, all) == all;
 }
 
-/* Whether the surface sp of member k of node p counts: see the file's comment. */
+/* Whether the surface sp of the member at position k of node p counts: see the file's
+ * comment. */
 static bool counts(const struct geometry *g, const struct part *p, uint32_t k, const struct surface_point *sp)
 {
 	if (p->op == PART_ALL)
 		return true;
 	double nudge = NUDGE * vmaxc(sp->p_err) + 0x1p-1000;
 	bool intersect = p->op == PART_INTERSECT;
-	struct vec3 q = vmad(sp->p, intersect ? -nudge : nudge, sp->ng);
-	for (uint32_t j = 0; j < p->count; j++)
-		if (j != k && csg_inside(g, g->members[p->first + j], q) != intersect)
-			return false;
-	return true;
+	return members_all(g, p, k, vmad(sp->p, intersect ? -nudge : nudge, sp->ng), intersect);
+}
+
+/* The search of csg_next() in node p: the closest counted surface so far. */
+struct csg_search {
+	const struct ray *r;
+	double t_after, tmax;
+	struct csg_hit best;
+	double best_err;               /* the best surface's error along its normal */
+	bool found;
+};
+
+/* How far the members are searched: past the best so far by the margin of the tie rule. */
+static double search_limit(const struct csg_search *s)
+{
+	return s->found ? fmin(s->tmax, s->best.t * (1 + TIE_MARGIN)) : s->tmax;
+}
+
+/* Looks at the member at position k of node p: its first surface that counts, if any,
+ * against the best so far. */
+static void visit_member(const struct geometry *g, const struct part *p, uint32_t k, struct csg_search *s)
+{
+	uint32_t m = g->members[p->first + k];
+	double limit = search_limit(s);
+	if (!box_meets(g->parts[m].lo, g->parts[m].hi, s->r, s->t_after, limit))
+		return;
+	struct csg_hit c;
+	for (double t0 = s->t_after; csg_next(g, m, s->r, t0, limit, &c); t0 = c.t) {
+		struct surface_point sp;
+		csg_surface(g, c.leaf, s->r, c.t, &sp);
+		if (!counts(g, p, k, &sp))
+			continue;
+		double err = vdot(vabs(sp.ng), sp.p_err);
+		/* one surface when closer along the normal than their error bounds allow */
+		bool same = s->found &&
+		            fabs(s->best.t - c.t) * fabs(vdot(s->r->d, sp.ng)) <= SAME_SURFACE * (err + s->best_err);
+		if (!s->found || (same ? c.leaf < s->best.leaf : c.t < s->best.t)) {
+			s->best = c;
+			s->best_err = err;
+			s->found = true;
+		}
+		return;
+	}
 }
 
 bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, double t_after, double tmax,
@@ -144,37 +215,31 @@ bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, doub
 			}
 		return false;
 	}
-	bool found = false;
-	double best_err = 0;           /* the best surface's error along its normal */
-	for (uint32_t k = 0; k < p->count; k++) {
-		uint32_t m = g->members[p->first + k];
-		double limit = found ? fmin(tmax, out->t * (1 + TIE_MARGIN)) : tmax;
-		if (!box_meets(g->parts[m].lo, g->parts[m].hi, r, t_after, limit))
-			continue;
-		struct csg_hit c;
-		for (double t0 = t_after; csg_next(g, m, r, t0, limit, &c); t0 = c.t) {
-			struct surface_point sp;
-			csg_surface(g, c.leaf, r, c.t, &sp);
-			if (!counts(g, p, k, &sp))
+	struct csg_search s = { .r = r, .t_after = t_after, .tmax = tmax };
+	for (uint32_t k = 0; k < p->hard; k++)
+		visit_member(g, p, k, &s);
+	if (p->tree == CSG_NO_TREE) {
+		for (uint32_t k = p->hard; k < p->count; k++)
+			visit_member(g, p, k, &s);
+	} else {
+		uint32_t stack[64], sp = 0;
+		stack[sp++] = p->tree;
+		while (sp) {
+			const struct csg_box *b = &g->csg_boxes[stack[--sp]];
+			if (!box_meets(b->lo, b->hi, r, t_after, search_limit(&s)))
 				continue;
-			double err = vdot(vabs(sp.ng), sp.p_err);
-			if (!found || c.t < out->t) {
-				/* nearer, unless it is the best's own surface and a later member's */
-				bool same = found && (out->t - c.t) * fabs(vdot(r->d, sp.ng)) <= SAME_SURFACE * (err + best_err);
-				if (!same || c.leaf < out->leaf) {
-					*out = c;
-					best_err = err;
-					found = true;
-				}
-			} else if (c.leaf < out->leaf &&
-			           (c.t - out->t) * fabs(vdot(r->d, sp.ng)) <= SAME_SURFACE * (err + best_err)) {
-				*out = c;
-				best_err = err;
+			if (!b->count) {
+				stack[sp++] = b->index;
+				stack[sp++] = b->index + 1;
+				continue;
 			}
-			break;
+			for (uint32_t k = b->index; k < b->index + b->count; k++)
+				visit_member(g, p, k, &s);
 		}
 	}
-	return found;
+	if (s.found)
+		*out = s.best;
+	return s.found;
 }
 
 void csg_bound(struct geometry *g, uint32_t part, struct vec3 *solid_lo, struct vec3 *solid_hi)

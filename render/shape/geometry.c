@@ -14,6 +14,7 @@ void geometry_free(struct geometry *g)
 	free(g->surfaces);
 	free(g->parts);
 	free(g->members);
+	free(g->csg_boxes);
 	free(g->part_triangles);
 	free(g->solids);
 	free(g->unbounded);

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "csg_tree.h"
 #include "part.h"
 #include "plane.h"
 #include "sphere.h"
@@ -38,6 +39,8 @@ struct geometry {
 	struct part *parts;
 	size_t nparts;
 	uint32_t *members;             /* the CSG nodes' members, into parts */
+	struct csg_box *csg_boxes;     /* the hierarchies over large nodes' members (csg_tree.h) */
+	size_t ncsg_boxes;
 	struct triangle *part_triangles;   /* the triangles of mesh parts, which no accelerator holds */
 	size_t npart_triangles;
 	size_t nmembers;

@@ -44,6 +44,11 @@ struct part {
 	uint32_t surface;              /* a leaf's, into geometry.surfaces */
 	uint32_t first, count;         /* PART_CSG: its members, into geometry.members;
 	                                * PART_MESH: its triangles, into geometry.part_triangles */
+	uint32_t hard;                 /* PART_CSG: its first `hard` members are those an inside test
+	                                * must always ask (csg_tree.h); the others, only at points
+	                                * within their bounds */
+	uint32_t tree;                 /* PART_CSG: the root of the hierarchy over its other members,
+	                                * into geometry.csg_boxes, or CSG_NO_TREE */
 	double a[6];                   /* the canonical shape's numbers, above */
 	struct affine to_object;       /* world -> canonical space (when moved) */
 	struct affine to_world;        /* canonical -> world space (when moved) */

@@ -11,8 +11,8 @@
 #include "part_make.h"
 #include "random.h"
 
-static struct part parts[16];
-static uint32_t members[16];
+static struct part parts[512];
+static uint32_t members[512];
 static struct geometry geo = { .parts = parts, .members = members };
 
 static uint32_t add(struct part p)
@@ -30,6 +30,7 @@ static uint32_t node(enum part_op op, uint32_t a, uint32_t b)
 	uint32_t n = add(p);
 	struct vec3 lo, hi;
 	csg_bound(&geo, n, &lo, &hi);
+	CHECK(csg_tree_build(&geo, &parts[n], NULL, 0) == 0);
 	return n;
 }
 
@@ -254,6 +255,69 @@ static void test_mesh(void)
 	geo.nparts = geo.nmembers = 0;
 }
 
+/* Inside the box minus the balls, by the leaves' own tests. */
+static bool cheese_inside(uint32_t box, uint32_t nballs, struct vec3 q)
+{
+	if (!part_inside_leaf(&parts[box], q))
+		return false;
+	for (uint32_t i = 1; i <= nballs; i++)
+		if (!part_inside_leaf(&parts[box + i], q)) /* the balls are inverted */
+			return false;
+	return true;
+}
+
+/* A box minus 300 balls, a node large enough for a hierarchy: its closest surfaces and
+ * inside tests against the set operation done point by point. */
+static void test_many_members(void)
+{
+	struct affine id = affine_identity;
+	struct part p;
+	enum { NBALLS = 300 };
+	CHECK(part_make_box(&p, v3(-2, -1, -1), v3(2, 1, 1), &id));
+	uint32_t box = add(p);
+	rng_seed(5);
+	for (int i = 0; i < NBALLS; i++) {
+		CHECK(part_make_sphere(&p, v3(urange(-2, 2), urange(-1, 1), urange(-1, 1)), urange(0.02, 0.2), &id));
+		p.inverse = true;
+		add(p);
+	}
+	for (uint32_t i = 0; i <= NBALLS; i++)
+		members[geo.nmembers + i] = box + i;
+	uint32_t n = add((struct part){ .kind = PART_CSG, .op = PART_INTERSECT, .first = (uint32_t)geo.nmembers,
+	                                .count = NBALLS + 1 });
+	geo.nmembers += NBALLS + 1;
+	struct vec3 lo, hi;
+	csg_bound(&geo, n, &lo, &hi);
+	static struct csg_box boxes[2 * (NBALLS + 1)];
+	geo.csg_boxes = boxes;
+	CHECK(csg_tree_build(&geo, &parts[n], boxes, 0) > 0);
+	CHECK(parts[n].hard == 1 && parts[n].tree == 0);
+	int wrong_inside = 0, wrong_hit = 0, hits = 0;
+	for (int i = 0; i < 4000; i++) {
+		struct vec3 q = v3(urange(-2.5, 2.5), urange(-1.5, 1.5), urange(-1.5, 1.5));
+		wrong_inside += csg_inside(&geo, n, q) != cheese_inside(box, NBALLS, q);
+		struct vec3 o = v3(urange(-6, 6), urange(-6, 6), -6);
+		struct ray r = ray(o, vsub(v3(urange(-2, 2), urange(-1, 1), urange(-1, 1)), o));
+		/* the first crossing of a leaf where the point by point set changes */
+		double want = INFINITY;
+		for (uint32_t k = 0; k <= NBALLS; k++) {
+			double t[4];
+			int c = part_crossings(&parts[box + k], &r, INFINITY, t);
+			for (int j = 0; j < c; j++)
+				if (t[j] < want && cheese_inside(box, NBALLS, vmad(r.o, t[j] * (1 - 1e-9), r.d)) !=
+				                       cheese_inside(box, NBALLS, vmad(r.o, t[j] * (1 + 1e-9), r.d)))
+					want = t[j];
+		}
+		double got = closest(n, r);
+		hits += got < INFINITY;
+		wrong_hit += !(got == want || fabs(got - want) <= 1e-12 * want);
+	}
+	CHECK(wrong_inside == 0);
+	CHECK(wrong_hit == 0);
+	CHECK(hits > 1000);
+	geo.nparts = geo.nmembers = 0;
+}
+
 int main(void)
 {
 	test_shapes();
@@ -262,5 +326,6 @@ int main(void)
 	test_coincident();
 	test_inside();
 	test_mesh();
+	test_many_members();
 	return check_result();
 }
