@@ -272,6 +272,9 @@ static bool statement(struct lang_ctx *ctx, struct ast_list *list, struct ast *s
 {
 	if (!ctx->each || !file_level) {
 		ast_list_push(ctx->arena, list, stmt);
+		if (file_level) /* so far: a block left open at the end of the file ends the parse
+		                 * (YYABORT) before the file's list is reduced */
+			ctx->stmts = *list;
 		return true;
 	}
 	bool go_on = ctx->each(ctx->each_arg, stmt);

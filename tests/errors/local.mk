@@ -216,5 +216,7 @@ TESTS += tests/errors/every_error.scn
 EXTRA_DIST += tests/errors/every_error.scn tests/errors/every_error.err
 TESTS += tests/errors/syntax_unclosed_indented.scn
 EXTRA_DIST += tests/errors/syntax_unclosed_indented.scn tests/errors/syntax_unclosed_indented.err
+TESTS += tests/errors/syntax_unclosed_eof.scn
+EXTRA_DIST += tests/errors/syntax_unclosed_eof.scn tests/errors/syntax_unclosed_eof.err
 TESTS += tests/errors/pov_light_position.scn
 EXTRA_DIST += tests/errors/pov_light_position.scn tests/errors/pov_light_position.err
