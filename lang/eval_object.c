@@ -98,8 +98,10 @@ static void compose(struct xform *x, const double t[3][4])
 	*x = r;
 }
 
-/* Applies one transform item to x. Returns false after reporting a bad value. */
-static bool apply_transform(struct evaluator *ev, struct ast *it, struct xform *x, bool sphere)
+/* Applies one transform item to x. Returns false after reporting a bad value. Every
+ * object takes every transform (LANGUAGE.md section 9): a sphere under an uneven scale is
+ * an ellipsoid. */
+static bool apply_transform(struct evaluator *ev, struct ast *it, struct xform *x)
 {
 	double v[3];
 	if (!vec_of(ev, arg0(it), v))
@@ -114,10 +116,6 @@ static bool apply_transform(struct evaluator *ev, struct ast *it, struct xform *
 	case KW_SCALE:
 		if (v[0] == 0 || v[1] == 0 || v[2] == 0) {
 			eval_error(ev, arg0(it), "scale must not be zero in any direction");
-			return false;
-		}
-		if (sphere && (fabs(v[0]) != fabs(v[1]) || fabs(v[1]) != fabs(v[2]))) {
-			eval_error(ev, arg0(it), "a sphere cannot be scaled unevenly; use a mesh for an ellipsoid");
 			return false;
 		}
 		for (int i = 0; i < 3; i++)
@@ -266,7 +264,7 @@ void eval_object(struct evaluator *ev, struct ast *s, const struct source *src)
 				obj.material = (int)ev->slots[arg0(it)->u.ident.ref->slot].v[0];
 			break;
 		case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:
-			ok &= apply_transform(ev, it, &x, kw == KW_SPHERE);
+			ok &= apply_transform(ev, it, &x);
 			moved = true;
 			for (int r = 0; r < 12 && ok; r++) /* scale 1e200 scale 1e200 */
 				if (!isfinite(x.m[r / 4][r % 4])) {
