@@ -183,6 +183,18 @@ struct ast_block *ast_block(struct arena *a, struct span open, struct ast_list a
 	return b;
 }
 
+struct ast_block *ast_csg_block(struct arena *a, struct span open, struct ast_list elements)
+{
+	struct ast_list none = { 0 };
+	struct ast_block *b = ast_block(a, open, none, none);
+	for (uint32_t i = 0; i < elements.n; i++) {
+		struct ast *e = elements.v[i];
+		ast_list_push(a, e->kind == AST_ITEM ? &b->items : &b->members, e);
+		b->broken |= e->kind == AST_ERROR;
+	}
+	return b;
+}
+
 struct ast_block *ast_broken_block(struct arena *a, struct span open)
 {
 	struct ast_list none = { 0 };

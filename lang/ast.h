@@ -32,12 +32,15 @@ struct ast_list {
 	uint32_t n, cap;
 };
 
-/* { ARGS ITEMS }: positional arguments, then attribute items. */
+/* { ARGS ITEMS }: positional arguments, then attribute items; or a CSG's { MEMBERS ITEMS },
+ * its members (and whatever else than items its braces hold) apart from its items. */
 struct ast_block {
 	struct ast_list args;
 	struct ast_list items;
+	struct ast_list members;   /* a CSG's: objects, for loops, and statements misplaced there */
 	struct span open;      /* the '{' */
-	bool broken;           /* a syntax error inside; its content was skipped */
+	bool broken;           /* a syntax error inside; its content was skipped (in a CSG's,
+	                        * only what an AST_ERROR member stands for) */
 };
 
 struct binding;
@@ -110,6 +113,8 @@ struct ast *ast_block_stmt(struct arena *a, struct span sp, enum kw kw, struct s
 struct ast *ast_item(struct arena *a, struct span sp, int kw, char *name, struct span name_span,
                      struct ast_list args, struct ast_block *block);
 struct ast_block *ast_block(struct arena *a, struct span open, struct ast_list args, struct ast_list items);
+/* A CSG's block: elements split into items (AST_ITEM) and members (the rest, in order). */
+struct ast_block *ast_csg_block(struct arena *a, struct span open, struct ast_list elements);
 /* A block whose content error recovery skipped: checked no further. */
 struct ast_block *ast_broken_block(struct arena *a, struct span open);
 

@@ -9,6 +9,7 @@
 
 #include <errno.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -76,6 +77,8 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 	default:
 		break;
 	}
+	if (kw_is_object(stmt->u.stmt.kw) && seen[KW_INVERSE])
+		check_inverse(c, stmt, seen[KW_INVERSE]);
 }
 
 /* A pipe (or a socket) named in a scene, say /dev/stdin, could keep the check waiting
@@ -106,9 +109,43 @@ static void check_readable(struct checker *c, const struct source *src, struct a
 	free(path);
 }
 
+/* A CSG: its items, then its members, each a statement of its own (a for loop's body is
+ * checked as anywhere else); then what the members must be. Any error inside fails the
+ * whole CSG. */
+static void check_csg(struct checker *c, struct ast *s)
+{
+	enum kw kw = s->u.stmt.kw;
+	struct ast_block *block = s->u.stmt.block;
+	struct ast *seen[KW_COUNT_ALL] = { 0 };
+	check_block(c, spec_of(kw), block, s->u.stmt.kw_span, seen);
+	struct ast *outer = c->csg;
+	unsigned outer_loops = c->csg_loops;
+	bool outer_failed = c->csg_failed;
+	c->csg = s;
+	c->csg_loops = 0;
+	c->csg_failed = false;
+	for (size_t i = 0; i < block->members.n && !diag_stopped(c->diag); i++)
+		check_statement(c, block->members.v[i]);
+	c->tainted |= c->csg_failed || block->broken;
+	c->csg = outer;
+	c->csg_loops = outer_loops;
+	c->csg_failed = outer_failed;
+	if (block->members.n == 0)
+		diag_error(c->diag, s->u.stmt.kw_span, "%s %s needs at least one object: %s { OBJECT ...  ITEMS }",
+		           kw == KW_INTERSECTION ? "an" : "a", kw_name(kw), kw_name(kw));
+	if (kw != KW_UNION)
+		check_solid_members(c, s);
+	if (seen[KW_INVERSE])
+		check_inverse(c, s, seen[KW_INVERSE]);
+}
+
 static void check_block_stmt(struct checker *c, struct ast *s)
 {
 	enum kw kw = s->u.stmt.kw;
+	if (kw_is_csg(kw)) {
+		check_csg(c, s);
+		return;
+	}
 	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH) {
 		if (c->loop_depth)
 			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a for loop", kw_name(kw));
@@ -205,12 +242,57 @@ static void check_include(struct checker *c, struct ast *inc)
 	free(real);
 }
 
+/* The objects' keywords, which a CSG's members start with. */
+static const enum kw objects[] = {
+	KW_SPHERE, KW_PLANE, KW_TRIANGLE, KW_MESH, KW_BOX, KW_CYLINDER, KW_CONE, KW_DISC, KW_TORUS,
+	KW_UNION, KW_MERGE, KW_INTERSECTION, KW_DIFFERENCE,
+};
+#define NOBJECTS (sizeof objects / sizeof objects[0])
+
+/* An unknown name inside a CSG, or in a for loop there: a misspelt object, or (in the
+ * CSG itself) a misspelt item; the closer guess says which. */
+static void unknown_in_csg(struct checker *c, struct ast *s)
+{
+	static const enum kw items[] = { KW_MATERIAL, KW_TRANSLATE, KW_ROTATE, KW_SCALE, KW_INVERSE };
+	const char *name = s->u.item.name, *csg = kw_name(c->csg->u.stmt.kw);
+	bool loop = c->csg_loops > 0;
+	char buf[160];
+	const char *hint = suggest_pov_hint(name, buf, sizeof buf);
+	if (hint) {
+		diag_error(c->diag, s->u.item.name_span, "unknown name '%s' in %s%s", name, csg, hint);
+		return;
+	}
+	struct suggestion sg;
+	suggest_init(&sg, name);
+	for (size_t i = 0; i < NOBJECTS; i++)
+		suggest_consider(&sg, kw_name(objects[i]));
+	suggest_consider(&sg, kw_name(KW_FOR));
+	if (loop)
+		suggest_consider(&sg, kw_name(KW_LET));
+	const char *statement = sg.best;
+	for (size_t i = 0; i < sizeof items / sizeof items[0] && !loop; i++)
+		suggest_consider(&sg, kw_name(items[i]));
+	/* written with braces, a name that suggests nothing is an object's */
+	bool braces = s->u.item.args.n == 0 && s->span.end > s->u.item.name_span.end;
+	bool object = loop || (sg.best ? sg.best == statement : braces);
+	hint = suggest_text(&sg, buf, sizeof buf);
+	if (loop)
+		diag_error(c->diag, s->u.item.name_span, "unknown statement '%s' in a for loop inside %s %s%s", name,
+		           c->csg->u.stmt.kw == KW_INTERSECTION ? "an" : "a", csg, hint);
+	else
+		diag_error(c->diag, s->u.item.name_span, "unknown %s '%s' in %s%s", object ? "object" : "attribute", name, csg,
+		           hint);
+}
+
 static void unknown_statement(struct checker *c, struct ast *s)
 {
 	static const enum kw statements[] = {
-		KW_LET, KW_INCLUDE, KW_FOR, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SPHERE, KW_PLANE,
-		KW_TRIANGLE, KW_MESH, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH,
+		KW_LET, KW_INCLUDE, KW_FOR, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH,
 	};
+	if (c->csg) {
+		unknown_in_csg(c, s);
+		return;
+	}
 	const char *name = s->u.item.name;
 	char buf[160];
 	const char *hint = suggest_pov_hint(name, buf, sizeof buf);
@@ -219,13 +301,72 @@ static void unknown_statement(struct checker *c, struct ast *s)
 		suggest_init(&sg, name);
 		for (size_t i = 0; i < sizeof statements / sizeof statements[0]; i++)
 			suggest_consider(&sg, kw_name(statements[i]));
+		for (size_t i = 0; i < NOBJECTS; i++)
+			suggest_consider(&sg, kw_name(objects[i]));
 		hint = suggest_text(&sg, buf, sizeof buf);
 	}
 	diag_error(c->diag, s->u.item.name_span, "unknown statement '%s'%s", name, hint);
 }
 
+/* A keyword's span: the first len bytes of sp. */
+static struct span first_bytes(struct span sp, uint32_t len)
+{
+	return (struct span){ sp.start, sp.start + len };
+}
+
+/* Whether s may stand in the CSG c->csg, or in a for loop there; reports it when not,
+ * saying what may. Returns false when s is to be checked no further: not a misplaced let
+ * or material, which are still bound, so that their uses say nothing more. */
+static bool placed(struct checker *c, struct ast *s)
+{
+	const char *name = kw_name(c->csg->u.stmt.kw);
+	char csg[32];
+	snprintf(csg, sizeof csg, "%s %s", c->csg->u.stmt.kw == KW_INTERSECTION ? "an" : "a", name);
+	bool loop = c->csg_loops > 0;
+	char what[64];
+	struct span at;
+	switch (s->kind) {
+	case AST_LET:
+		if (loop) /* a loop's body is a scope */
+			return true;
+		at = first_bytes(s->span, 3);
+		snprintf(what, sizeof what, "'let'");
+		break;
+	case AST_INCLUDE:
+		at = first_bytes(s->span, 7);
+		snprintf(what, sizeof what, "'include'");
+		break;
+	case AST_ITEM: /* an item in a for loop's body: the CSG's own are apart */
+		diag_error(c->diag, s->u.item.name_span, "'%s' cannot be in a for loop inside %s; give it to the %s, "
+		           "or to each object", item_name(s), csg, name);
+		return false;
+	case AST_BLOCK_STMT:
+		if (kw_is_object(s->u.stmt.kw))
+			return true;
+		at = s->u.stmt.kw_span;
+		if (s->u.stmt.kw == KW_MATERIAL) {
+			diag_error(c->diag, at, "a material definition cannot be inside %s: define it before the %s (%s takes "
+			           "material NAME or material { ... })", csg, name, csg);
+			return true;
+		}
+		snprintf(what, sizeof what, "'%s'", kw_name(s->u.stmt.kw));
+		break;
+	default: /* a for loop; an unknown name, a syntax error: each says so */
+		return true;
+	}
+	if (loop)
+		diag_error(c->diag, at, "%s cannot be in a for loop inside %s; a for loop in a CSG holds objects, for "
+		           "loops and let", what, csg);
+	else
+		diag_error(c->diag, at, "%s cannot be inside %s; a CSG holds objects, for loops of objects, material, "
+		           "transforms and inverse", what, csg);
+	return s->kind == AST_LET;
+}
+
 static void check_parts(struct checker *c, struct ast *s)
 {
+	if (c->csg && !placed(c, s))
+		return;
 	switch (s->kind) {
 	case AST_LET: {
 		enum ast_type t = check_expr(c, s->u.let.value);
@@ -254,10 +395,12 @@ static void check_parts(struct checker *c, struct ast *s)
 		 * rebind its name (let i = i * 10) */
 		names_push_scope(c);
 		c->loop_depth++;
+		c->csg_loops += c->csg != NULL;
 		s->u.loop.b = names_bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
 		names_push_scope(c);
 		check_stmts(c, &s->u.loop.body);
 		names_pop_scope(c);
+		c->csg_loops -= c->csg != NULL;
 		c->loop_depth--;
 		names_pop_scope(c);
 		break;
@@ -266,6 +409,9 @@ static void check_parts(struct checker *c, struct ast *s)
 		break;
 	case AST_BLOCK_STMT:
 		check_block_stmt(c, s);
+		break;
+	case AST_ERROR: /* a syntax error in a CSG's for loop, reported */
+		c->tainted = true;
 		break;
 	default:
 		break;
@@ -294,6 +440,7 @@ void check_statement(struct checker *c, struct ast *s)
 	check_parts(c, s);
 	int own = c->diag->errors - before - (c->nested_errors - nested_before);
 	s->failed = own > 0 || c->tainted;
+	c->csg_failed |= s->failed && c->csg;
 	struct binding *b = binding_of(s);
 	if (b)
 		b->failed = s->failed;

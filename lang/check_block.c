@@ -1,6 +1,6 @@
 /* check_block.c: which attributes each block statement takes (camera, light, material,
- * sphere, plane, triangle, mesh, skybox, samples), the shape of each attribute's value,
- * and the check of a block against them. */
+ * the objects and CSGs, skybox, samples), the shape of each attribute's value, and the
+ * check of a block against them. */
 #include "check_internal.h"
 
 #include <string.h>
@@ -27,12 +27,17 @@ static const struct attr_spec material_attrs[] = {
 	{ KW_SHININESS, S_NUM, false }, { KW_REFLECT, S_VEC, false }, { KW_TRANSMIT, S_VEC, false },
 	{ KW_IOR, S_NUM, false }, { KW_FRESNEL, S_FLAG, false }, { KW_EMIT, S_VEC, false },
 };
+/* every object takes 'inverse'; check.c says when it has no inside to swap */
 static const struct attr_spec shape_attrs[] = {
-	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS,
+	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_INVERSE, S_FLAG, false },
+};
+static const struct attr_spec open_shape_attrs[] = {   /* cylinder, cone */
+	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_INVERSE, S_FLAG, false }, { KW_OPEN, S_FLAG, false },
 };
 static const struct attr_spec mesh_attrs[] = {
-	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_SMOOTH, S_FLAG, false },
+	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_INVERSE, S_FLAG, false }, { KW_SMOOTH, S_FLAG, false },
 	{ KW_VERTICES, S_LIST, false }, { KW_FACES, S_LIST, false }, { KW_NORMALS, S_LIST, false },
+	{ KW_INSIDE_VECTOR, S_VEC, false },
 };
 static const struct attr_spec skybox_attrs[] = {
 	{ KW_COLOR, S_VEC, false }, { KW_ZENITH, S_VEC, false }, { KW_HORIZON, S_VEC, false },
@@ -49,10 +54,11 @@ struct block_spec {
 	size_t nattrs;
 	const char *positional;    /* shapes of the positional arguments, as S_ codes + '0' */
 	const char *signature;     /* how the positional arguments are written, for messages */
-	const char *names[3];      /* what each positional argument is, for messages */
+	const char *names[4];      /* what each positional argument is, for messages */
+	unsigned optional;         /* how many of the last positional arguments may be left out */
 };
 
-#define SPEC(what, attrs, pos, sig, ...) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig, { __VA_ARGS__ } }
+#define SPEC(what, attrs, pos, sig, ...) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig, { __VA_ARGS__ }, 0 }
 static const struct block_spec camera_spec = SPEC("camera", camera_attrs, "", NULL, NULL);
 static const struct block_spec light_spec = SPEC("light", light_attrs, "", NULL, NULL);
 static const struct block_spec material_spec = SPEC("material", material_attrs, "", NULL, NULL);
@@ -62,7 +68,27 @@ static const struct block_spec plane_spec = SPEC("plane", shape_attrs, "21", "pl
                                                  "the plane's normal", "the plane's offset");
 static const struct block_spec triangle_spec = SPEC("triangle", shape_attrs, "222", "triangle { A, B, C ... }",
                                                     "a triangle's corner", "a triangle's corner", "a triangle's corner");
+static const struct block_spec box_spec = SPEC("box", shape_attrs, "22", "box { CORNER1, CORNER2 ... }",
+                                               "a box's corner", "a box's corner");
+static const struct block_spec cylinder_spec = SPEC("cylinder", open_shape_attrs, "221",
+                                                    "cylinder { BASE, CAP, RADIUS ... }", "the cylinder's base",
+                                                    "the cylinder's cap", "the cylinder's radius");
+static const struct block_spec cone_spec = SPEC("cone", open_shape_attrs, "2121",
+                                                "cone { BASE, BASE_RADIUS, CAP, CAP_RADIUS ... }", "the cone's base",
+                                                "the cone's base radius", "the cone's cap", "the cone's cap radius");
+static const struct block_spec disc_spec = {
+	"disc", shape_attrs, sizeof shape_attrs / sizeof shape_attrs[0], "2211",
+	"disc { CENTER, NORMAL, RADIUS [, HOLE_RADIUS] ... }",
+	{ "the disc's center", "the disc's normal", "the disc's radius", "the disc's hole radius" }, 1,
+};
+static const struct block_spec torus_spec = SPEC("torus", shape_attrs, "11", "torus { MAJOR, MINOR ... }",
+                                                 "the torus's major radius", "the torus's minor radius");
 static const struct block_spec mesh_spec = SPEC("mesh", mesh_attrs, "", NULL, NULL);
+/* a CSG's items; its members are statements, which check.c checks */
+static const struct block_spec union_spec = SPEC("union", shape_attrs, "", NULL, NULL);
+static const struct block_spec merge_spec = SPEC("merge", shape_attrs, "", NULL, NULL);
+static const struct block_spec intersection_spec = SPEC("intersection", shape_attrs, "", NULL, NULL);
+static const struct block_spec difference_spec = SPEC("difference", shape_attrs, "", NULL, NULL);
 static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL, NULL);
 static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL, NULL);
 
@@ -240,6 +266,26 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 	}
 }
 
+/* An attribute of LANGUAGE.md section 9 where it does not apply: says where it does.
+ * Returns whether item was one. */
+static bool misplaced(struct checker *c, struct ast *item)
+{
+	struct span at = item->u.item.name_span;
+	switch (item->u.item.kw) {
+	case KW_OPEN:
+		diag_error(c->diag, at, "'open' applies only to a cylinder or a cone: it leaves out their end discs");
+		return true;
+	case KW_INSIDE_VECTOR:
+		diag_error(c->diag, at, "'inside_vector' applies only to a mesh: the other objects know their inside");
+		return true;
+	case KW_INVERSE:
+		diag_error(c->diag, at, "'inverse' applies only to an object: it swaps a solid's inside and outside");
+		return true;
+	default:
+		return false;
+	}
+}
+
 /* Checks a block's positional arguments and items; records the first item of each
  * attribute in seen[] for the statement's own rules. Returns false when an attribute
  * was unknown: what the block lacks may then be only misspelt. */
@@ -247,12 +293,16 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
                  struct ast *seen[KW_COUNT_ALL])
 {
 	bool complete = true;
-	size_t npos = strlen(spec->positional);
+	size_t npos = strlen(spec->positional), least = npos - spec->optional;
 	struct ast_list *args = &block->args;
-	if (spec->signature && args->n != npos) {
+	if (spec->signature && (args->n < least || args->n > npos)) {
 		struct span at = args->n > npos ? args->v[npos]->span : args->n ? args->v[args->n - 1]->span : where;
-		diag_error(c->diag, at, "%s takes %zu value%s before its attributes: %s", spec->what, npos,
-		           npos == 1 ? "" : "s", spec->signature);
+		if (spec->optional)
+			diag_error(c->diag, at, "%s takes %zu or %zu values before its attributes: %s", spec->what, least,
+			           npos, spec->signature);
+		else
+			diag_error(c->diag, at, "%s takes %zu value%s before its attributes: %s", spec->what, npos,
+			           npos == 1 ? "" : "s", spec->signature);
 	}
 	for (size_t i = 0; i < args->n; i++) /* a mesh's file name with a bad escape, say */
 		c->tainted |= args->v[i]->kind == AST_ERROR;
@@ -266,6 +316,10 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
 	for (size_t i = 0; i < block->items.n; i++) {
 		struct ast *item = block->items.v[i];
 		const struct attr_spec *a = item->u.item.kw >= 0 ? find_attr(spec, item->u.item.kw) : NULL;
+		if (!a && misplaced(c, item)) {
+			complete = false;
+			continue;
+		}
 		if (!a) {
 			struct suggestion s;
 			char buf[160];
@@ -302,7 +356,16 @@ const struct block_spec *spec_of(enum kw kw)
 	case KW_SPHERE: return &sphere_spec;
 	case KW_PLANE: return &plane_spec;
 	case KW_TRIANGLE: return &triangle_spec;
+	case KW_BOX: return &box_spec;
+	case KW_CYLINDER: return &cylinder_spec;
+	case KW_CONE: return &cone_spec;
+	case KW_DISC: return &disc_spec;
+	case KW_TORUS: return &torus_spec;
 	case KW_MESH: return &mesh_spec;
+	case KW_UNION: return &union_spec;
+	case KW_MERGE: return &merge_spec;
+	case KW_INTERSECTION: return &intersection_spec;
+	case KW_DIFFERENCE: return &difference_spec;
 	case KW_SKYBOX: return &skybox_spec;
 	case KW_SAMPLES: return &samples_spec;
 	default: return NULL;

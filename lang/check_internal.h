@@ -1,7 +1,8 @@
 /* check_internal.h: what the checker's files share, and nothing outside them uses:
- * the checker's state and the calls between check.c (statements, the entry points),
- * check_block.c (the blocks' attributes), check_expr.c (expressions) and check_names.c
- * (the symbol table), each of which calls only those after it. */
+ * the checker's state and the calls between check.c (statements, CSGs, the entry points),
+ * check_solid.c (which objects have an inside), check_block.c (the blocks' attributes),
+ * check_expr.c (expressions) and check_names.c (the symbol table), each of which calls
+ * only those after it. */
 #ifndef SCN_CHECK_INTERNAL_H
 #define SCN_CHECK_INTERNAL_H
 
@@ -42,6 +43,12 @@ struct checker {
 	 * error; the errors reported inside the statements nested in it, which are theirs */
 	bool tainted;
 	int nested_errors;
+	/* the innermost CSG whose members are being checked, or NULL; the for loops entered
+	 * inside it; whether a statement inside it failed (then the whole CSG has: evaluated
+	 * without that member, it would be another shape) */
+	struct ast *csg;
+	unsigned csg_loops;
+	bool csg_failed;
 };
 
 enum shape {
@@ -55,6 +62,24 @@ enum shape {
 	S_PIGMENT,    /* a colour or checker(...) */
 	S_LIST,       /* { V, V, ... } */
 };
+
+/* ---- check_solid.c ---- */
+
+/* Why an object has no inside, and what to do about it. */
+struct no_inside {
+	const struct ast *at;      /* the object statement without one: the one asked about, or a
+	                            * member (of a member ...) of that union */
+	const char *why, *fix;
+};
+/* Whether statement s, an object or a for loop of them, has an inside as its text says
+ * (LANGUAGE.md section 9); when not, *why. What is not an object, or is broken by a
+ * syntax error, counts as having one: it has its error already. */
+bool solid_statement(const struct ast *s, struct no_inside *why);
+/* Reports each member of csg (an intersection, difference or merge) without an inside, at
+ * its keyword, through for loops. */
+void check_solid_members(struct checker *c, const struct ast *csg);
+/* Reports the item 'inverse' of object s when s has no inside. */
+void check_inverse(struct checker *c, const struct ast *s, const struct ast *inverse);
 
 /* ---- check_names.c ---- */
 

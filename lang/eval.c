@@ -1,7 +1,7 @@
 /* eval.c: runs a checked scene: expands loops and includes, evaluates each statement
- * (eval_object.c the objects, eval_expr.c the expressions; a non-finite result is an
- * error at its place), checks every value's range, and builds the scene_desc. Types
- * were settled by check.c; this file only computes. */
+ * (eval_object.c the objects and CSGs, eval_expr.c the expressions; a non-finite result
+ * is an error at its place), checks every value's range, and builds the scene_desc.
+ * Types were settled by check.c; this file only computes. */
 #include "eval_internal.h"
 
 #include <stdlib.h>
@@ -177,8 +177,10 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 	if (!whole_of(ev, s->u.loop.from, -9007199254740992.0, 9007199254740992.0, "a for loop's start", &from) ||
 	    !whole_of(ev, s->u.loop.to, -9007199254740992.0, 9007199254740992.0, "a for loop's end", &to))
 		return;
-	if (ev->iterations > LANG_MAX_ITERATIONS) /* the limit was hit: no loop runs any more */
+	if (ev->iterations > LANG_MAX_ITERATIONS) { /* the limit was hit: no loop runs any more */
+		ev->failures++;
 		return;
+	}
 	double n = to > from ? to - from : 0;
 	if (n > (double)(LANG_MAX_ITERATIONS - ev->iterations)) {
 		eval_error_span(ev, s, diag_span_join(s->u.loop.from->span, s->u.loop.to->span),
@@ -197,6 +199,16 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 		eval_stmts(ev, &s->u.loop.body);
 	}
 	ev->nloops--;
+}
+
+/* A CSG: its slot and items, then its members, which take what it hands down. */
+static void eval_csg(struct evaluator *ev, struct ast *s)
+{
+	struct csg_frame frame;
+	if (!csg_begin(ev, s, &frame))
+		return;
+	eval_stmts(ev, &s->u.stmt.block->members);
+	csg_end(ev, s);
 }
 
 static void eval_stmt(struct evaluator *ev, struct ast *s)
@@ -232,7 +244,10 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 				eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span);
 			break;
 		default:
-			eval_object(ev, s, src);
+			if (kw_is_csg(s->u.stmt.kw))
+				eval_csg(ev, s);
+			else
+				eval_shape(ev, s, src);
 			break;
 		}
 		break;

@@ -25,9 +25,10 @@ const char *num_text(double x, char buf[32])
 }
 
 /* Reports an error once per place (*reported), however many loop iterations reach it,
- * with the loop variables' values that led there. */
+ * with the loop variables' values that led there; counts it each time. */
 static void report_once(struct evaluator *ev, bool *reported, struct span sp, const char *fmt, va_list ap)
 {
+	ev->failures++;
 	if (*reported)
 		return;
 	*reported = true;
@@ -125,8 +126,10 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 			out->v[0] = M_PI;
 			return true;
 		}
-		if (ev->bad[e->u.ident.ref->slot])
+		if (ev->bad[e->u.ident.ref->slot]) {
+			ev->failures++;
 			return false;
+		}
 		*out = ev->slots[e->u.ident.ref->slot];
 		return true;
 	case AST_NEG:

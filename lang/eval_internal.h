@@ -1,6 +1,6 @@
 /* eval_internal.h: what the evaluator's files share, and nothing outside them uses: the
  * evaluator's state and the calls between eval.c (statements, loops, the entry points),
- * eval_object.c (objects, materials, transforms) and eval_expr.c (expressions and
+ * eval_object.c (objects, CSGs, materials, transforms) and eval_expr.c (expressions and
  * the values of items), each of which calls only those after it. */
 #ifndef SCN_EVAL_INTERNAL_H
 #define SCN_EVAL_INTERNAL_H
@@ -13,6 +13,16 @@
 #include "builtins.h"
 #include "eval.h"
 
+/* A CSG whose members are being evaluated: what they take from it. */
+struct csg_frame {
+	size_t index;              /* its slot in out->objects, reserved before its members */
+	int xform;                 /* its transform to world, which follows each member's own */
+	int material;              /* the material of the members without their own, or -1 */
+	int pattern_xform;         /* the space of that material's patterns */
+	uint64_t failures;         /* evaluator.failures when it started */
+	struct csg_frame *outer;
+};
+
 struct evaluator {
 	struct diag *diag;
 	struct scene_desc *out;
@@ -21,17 +31,28 @@ struct evaluator {
 	size_t nslots, cap_slots, cap_bad;
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
+	/* values that could not be computed, each time (eval_error and the use of a bad
+	 * binding), reported or not: a CSG that misses a member is dropped, not cut short */
+	uint64_t failures;
 	bool exhausted;            /* a limit on the whole evaluation was reached: stop */
 	unsigned nloops;
 	struct { const struct ast *loop; double i; } loops[LANG_MAX_NESTING];
+	struct csg_frame *csg;     /* the innermost CSG being evaluated, or NULL */
 };
 
 /* ---- eval_object.c ---- */
 
 /* Evaluates a material block into a new entry of the scene's materials; returns its index. */
 int eval_material(struct evaluator *ev, struct ast_block *block, const char *name, struct span sp);
-/* Evaluates the object statement s into out->objects. */
-void eval_object(struct evaluator *ev, struct ast *s, const struct source *src);
+/* Evaluates the object statement s (not a CSG) into out->objects, inside the CSG ev->csg
+ * if there is one. */
+void eval_shape(struct evaluator *ev, struct ast *s, const struct source *src);
+/* A CSG statement s: csg_begin reserves its slot, evaluates its items and makes it
+ * ev->csg (frame is its storage), or returns false when the limit on objects is reached;
+ * the caller then evaluates its members, and csg_end completes it, or drops it with its
+ * members when one of them could not be evaluated. */
+bool csg_begin(struct evaluator *ev, struct ast *s, struct csg_frame *frame);
+void csg_end(struct evaluator *ev, struct ast *s);
 
 /* ---- eval_expr.c ---- */
 

@@ -1,6 +1,7 @@
-/* eval_object.c: the objects of a scene (LANGUAGE.md section 5) into its description:
- * each shape's values, with every degenerate one an error at its place, its material and
- * its transforms; and materials. */
+/* eval_object.c: the objects of a scene (LANGUAGE.md sections 5 and 9) into its
+ * description: each shape's values, with every degenerate one an error at its place; the
+ * items every object takes (material, transforms, inverse); CSGs, whose members follow
+ * them in preorder and take their transforms and material; and materials. */
 #include "eval_internal.h"
 
 #include <stdlib.h>
@@ -138,16 +139,18 @@ static bool apply_transform(struct evaluator *ev, struct ast *it, struct xform *
 	}
 }
 
-static void push_object(struct evaluator *ev, struct ast *at, struct object_desc *obj)
+/* Appends obj to the scene's objects; false (reported) past LANG_MAX_OBJECTS. */
+static bool push_object(struct evaluator *ev, struct ast *at, const struct object_desc *obj)
 {
 	struct scene_desc *o = ev->out;
 	if (o->nobjects == LANG_MAX_OBJECTS) {
 		eval_error(ev, at, "the scene makes more than %d objects", LANG_MAX_OBJECTS);
 		ev->exhausted = true;
-		return;
+		return false;
 	}
 	xgrow((void **)&o->objects, &o->cap_objects, o->nobjects + 1, sizeof *o->objects);
 	o->objects[o->nobjects++] = *obj;
+	return true;
 }
 
 /* Evaluates a mesh's inline lists into a new mesh entry; false after an error. */
@@ -204,92 +207,284 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 	return ok;
 }
 
-void eval_object(struct evaluator *ev, struct ast *s, const struct source *src)
+static bool same_point(const double a[3], const double b[3])
 {
-	enum kw kw = s->u.stmt.kw;
-	struct ast_block *block = s->u.stmt.block;
-	struct object_desc obj = { .material = -1, .xform = -1, .span = s->span };
-	struct ast_list *args = &block->args;
+	return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+/* A mesh's file or lists into a new mesh entry, which obj refers to; false after an error. */
+static bool mesh_values(struct evaluator *ev, struct ast *s, struct object_desc *obj, const struct source *src)
+{
+	struct ast_list *args = &s->u.stmt.block->args;
+	struct mesh_desc m = { 0 };
 	bool ok = true;
-	switch (kw) {
-	case KW_SPHERE:
-		obj.kind = OBJ_SPHERE;
-		ok = vec_of(ev, args->v[0], obj.u.sphere.center) && num_of(ev, args->v[1], &obj.u.sphere.radius);
-		if (ok && !(obj.u.sphere.radius > 0)) {
-			char nb[32];
-			eval_error(ev, args->v[1], "a sphere's radius must be positive, not %s", num_text(obj.u.sphere.radius, nb));
+	obj->kind = OBJ_MESH;
+	if (args->n) {
+		m.file = xstrdup(args->v[0]->u.str.text);
+		m.path = file_resolve(src->dir, m.file);
+		m.file_span = args->v[0]->span;
+	} else {
+		ok = eval_mesh_lists(ev, s, &m);
+	}
+	struct scene_desc *o = ev->out;
+	xgrow((void **)&o->meshes, &o->cap_meshes, o->nmeshes + 1, sizeof *o->meshes);
+	o->meshes[o->nmeshes] = m;
+	obj->u.mesh.index = (int)o->nmeshes++;
+	return ok;
+}
+
+/* A cylinder's or a cone's values: BASE, CAP, RADIUS or BASE, BASE_RADIUS, CAP, CAP_RADIUS. */
+static bool cone_values(struct evaluator *ev, struct ast_list *args, bool cylinder, struct object_desc *obj)
+{
+	char nb[32];
+	struct ast *base = args->v[0], *cap = args->v[cylinder ? 1 : 2];
+	struct ast *r[2] = { args->v[cylinder ? 2 : 1], args->v[cylinder ? 2 : 3] };
+	double *radius = obj->u.cone.radius;
+	obj->kind = cylinder ? OBJ_CYLINDER : OBJ_CONE;
+	bool have_base = vec_of(ev, base, obj->u.cone.base), have_cap = vec_of(ev, cap, obj->u.cone.cap);
+	bool have_r[2] = { num_of(ev, r[0], &radius[0]), false };
+	have_r[1] = cylinder ? have_r[0] : num_of(ev, r[1], &radius[1]);
+	if (cylinder)
+		radius[1] = radius[0];
+	bool ok = have_base && have_cap && have_r[0] && have_r[1];
+	if (have_base && have_cap && same_point(obj->u.cone.base, obj->u.cone.cap)) {
+		eval_error(ev, cap, "a %s's cap must not be the same point as its base", cylinder ? "cylinder" : "cone");
+		ok = false;
+	}
+	if (cylinder) {
+		if (have_r[0] && !(radius[0] > 0)) {
+			eval_error(ev, r[0], "a cylinder's radius must be positive, not %s", num_text(radius[0], nb));
 			ok = false;
 		}
-		break;
+		return ok;
+	}
+	static const char *const which[2] = { "base", "cap" };
+	for (int k = 0; k < 2; k++)
+		if (have_r[k] && radius[k] < 0) {
+			eval_error(ev, r[k], "a cone's %s radius must not be negative, not %s", which[k], num_text(radius[k], nb));
+			ok = false;
+		}
+	if (have_r[0] && have_r[1] && radius[0] == 0 && radius[1] == 0) {
+		eval_error(ev, r[1], "a cone's radii cannot both be 0 (one of them may be)");
+		ok = false;
+	}
+	return ok;
+}
+
+static bool disc_values(struct evaluator *ev, struct ast_list *args, struct object_desc *obj)
+{
+	char nb[32], nb2[32];
+	double *radius = &obj->u.disc.radius, *hole = &obj->u.disc.hole;
+	obj->kind = OBJ_DISC;
+	bool have_center = vec_of(ev, args->v[0], obj->u.disc.center);
+	bool have_normal = vec_of(ev, args->v[1], obj->u.disc.normal);
+	bool have_radius = num_of(ev, args->v[2], radius);
+	bool have_hole = args->n < 4 || num_of(ev, args->v[3], hole);
+	bool ok = have_center && have_normal && have_radius && have_hole;
+	if (have_normal && is_zero(obj->u.disc.normal)) {
+		eval_error(ev, args->v[1], "a disc's normal must not be a zero vector");
+		ok = false;
+	}
+	if (have_radius && !(*radius > 0)) {
+		eval_error(ev, args->v[2], "a disc's radius must be positive, not %s", num_text(*radius, nb));
+		ok = false;
+	}
+	if (args->n < 4 || !have_hole)
+		return ok;
+	if (*hole < 0) {
+		eval_error(ev, args->v[3], "a disc's hole radius must not be negative, not %s", num_text(*hole, nb));
+		ok = false;
+	} else if (have_radius && *radius > 0 && *hole >= *radius) {
+		eval_error(ev, args->v[3], "a disc's hole radius must be less than its radius, %s, not %s",
+		           num_text(*radius, nb), num_text(*hole, nb2));
+		ok = false;
+	}
+	return ok;
+}
+
+static bool torus_values(struct evaluator *ev, struct ast_list *args, struct object_desc *obj)
+{
+	char nb[32], nb2[32];
+	double *major = &obj->u.torus.major, *minor = &obj->u.torus.minor;
+	obj->kind = OBJ_TORUS;
+	bool have_major = num_of(ev, args->v[0], major), have_minor = num_of(ev, args->v[1], minor);
+	bool ok = have_major && have_minor;
+	if (have_major && !(*major > 0)) {
+		eval_error(ev, args->v[0], "a torus's major radius must be positive, not %s", num_text(*major, nb));
+		ok = false;
+	}
+	if (have_minor && !(*minor > 0)) {
+		eval_error(ev, args->v[1], "a torus's minor radius must be positive, not %s", num_text(*minor, nb));
+		ok = false;
+	} else if (have_minor && have_major && *major > 0 && *minor >= *major) {
+		eval_error(ev, args->v[1], "a torus's minor radius must be less than its major radius, %s, not %s",
+		           num_text(*major, nb), num_text(*minor, nb2));
+		ok = false;
+	}
+	return ok;
+}
+
+/* A shape's positional values into obj; false after an error, each reported at its value. */
+static bool shape_values(struct evaluator *ev, struct ast *s, struct object_desc *obj, const struct source *src)
+{
+	struct ast_list *args = &s->u.stmt.block->args;
+	char nb[32];
+	bool ok = true;
+	switch (s->u.stmt.kw) {
+	case KW_SPHERE:
+		obj->kind = OBJ_SPHERE;
+		ok = vec_of(ev, args->v[0], obj->u.sphere.center) && num_of(ev, args->v[1], &obj->u.sphere.radius);
+		if (ok && !(obj->u.sphere.radius > 0)) {
+			eval_error(ev, args->v[1], "a sphere's radius must be positive, not %s",
+			           num_text(obj->u.sphere.radius, nb));
+			ok = false;
+		}
+		return ok;
 	case KW_PLANE:
-		obj.kind = OBJ_PLANE;
-		ok = vec_of(ev, args->v[0], obj.u.plane.normal) && num_of(ev, args->v[1], &obj.u.plane.offset);
-		if (ok && is_zero(obj.u.plane.normal)) {
+		obj->kind = OBJ_PLANE;
+		ok = vec_of(ev, args->v[0], obj->u.plane.normal) && num_of(ev, args->v[1], &obj->u.plane.offset);
+		if (ok && is_zero(obj->u.plane.normal)) {
 			eval_error(ev, args->v[0], "a plane's normal must not be a zero vector");
 			ok = false;
 		}
-		break;
+		return ok;
 	case KW_TRIANGLE:
-		obj.kind = OBJ_TRIANGLE;
+		obj->kind = OBJ_TRIANGLE;
 		for (int k = 0; k < 3 && ok; k++)
-			ok = vec_of(ev, args->v[k], obj.u.triangle.v[k]);
-		break;
-	default: { /* mesh */
-		struct mesh_desc m = { 0 };
-		obj.kind = OBJ_MESH;
-		if (args->n) {
-			m.file = xstrdup(args->v[0]->u.str.text);
-			m.path = file_resolve(src->dir, m.file);
-			m.file_span = args->v[0]->span;
-		} else {
-			ok = eval_mesh_lists(ev, s, &m);
-		}
-		struct scene_desc *o = ev->out;
-		xgrow((void **)&o->meshes, &o->cap_meshes, o->nmeshes + 1, sizeof *o->meshes);
-		o->meshes[o->nmeshes] = m;
-		obj.u.mesh.index = (int)o->nmeshes++;
-		break;
+			ok = vec_of(ev, args->v[k], obj->u.triangle.v[k]);
+		return ok;
+	case KW_BOX: {
+		/* the corners as written: any two opposite ones, in any order (POV-Ray's box) */
+		double (*c)[3] = obj->u.box.corner;
+		obj->kind = OBJ_BOX;
+		ok = vec_of(ev, args->v[0], c[0]) & vec_of(ev, args->v[1], c[1]);
+		for (int k = 0; k < 3 && ok; k++)
+			if (c[0][k] == c[1][k]) {
+				eval_error(ev, args->v[1], "a box's corners must differ in x, y and z; both have %c = %s",
+				           "xyz"[k], num_text(c[0][k], nb));
+				ok = false;
+			}
+		return ok;
 	}
+	case KW_CYLINDER: case KW_CONE:
+		return cone_values(ev, args, s->u.stmt.kw == KW_CYLINDER, obj);
+	case KW_DISC:
+		return disc_values(ev, args, obj);
+	case KW_TORUS:
+		return torus_values(ev, args, obj);
+	default:
+		return mesh_values(ev, s, obj, src);
 	}
+}
 
+static bool finite_xform(const struct xform *x)
+{
+	for (int r = 0; r < 12; r++)
+		if (!isfinite(x->m[r / 4][r % 4]))
+			return false;
+	return true;
+}
+
+/* The items of object s into obj: the ones every object takes (material, transforms,
+ * inverse) and a shape's own (open, smooth, inside_vector); then what the enclosing CSG
+ * hands down: its transform, after obj's own, and its material when obj has none (whose
+ * patterns then live in the CSG's space). False after an error. */
+static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc *obj)
+{
+	struct ast_block *block = s->u.stmt.block;
+	struct scene_desc *o = ev->out;
 	struct xform x = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
-	bool moved = false;
+	bool moved = false, own_material = false, ok = true;
 	for (size_t i = 0; i < block->items.n; i++) {
 		struct ast *it = block->items.v[i];
 		switch (it->u.item.kw) {
 		case KW_MATERIAL:
 			if (it->u.item.block)
-				obj.material = eval_material(ev, it->u.item.block, NULL, it->span);
+				obj->material = eval_material(ev, it->u.item.block, NULL, it->span);
 			else
-				obj.material = (int)ev->slots[arg0(it)->u.ident.ref->slot].v[0];
+				obj->material = (int)ev->slots[arg0(it)->u.ident.ref->slot].v[0];
+			own_material = true;
 			break;
 		case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:
 			ok &= apply_transform(ev, it, &x);
 			moved = true;
-			for (int r = 0; r < 12 && ok; r++) /* scale 1e200 scale 1e200 */
-				if (!isfinite(x.m[r / 4][r % 4])) {
-					eval_error(ev, it, "the transforms make the object too large to be numbers");
-					ok = false;
-				}
+			if (ok && !finite_xform(&x)) { /* scale 1e200 scale 1e200 */
+				eval_error(ev, it, "the transforms make the object too large to be numbers");
+				ok = false;
+			}
 			break;
 		case KW_SMOOTH:
-			obj.smooth = true;
+			obj->smooth = true;
 			break;
+		case KW_OPEN:
+			obj->open = true;
+			break;
+		case KW_INVERSE:
+			obj->inverse = true;
+			break;
+		case KW_INSIDE_VECTOR: { /* a mesh's (check.c), whose entry shape_values made */
+			struct mesh_desc *m = &o->meshes[obj->u.mesh.index];
+			m->has_inside_vector = true;
+			if (!vec_of(ev, arg0(it), m->inside_vector)) {
+				ok = false;
+			} else if (is_zero(m->inside_vector)) {
+				eval_error(ev, arg0(it), "inside_vector must not be a zero vector");
+				ok = false;
+			}
+			break;
+		}
 		}
 	}
 	if (!ok)
-		return;
-	if (obj.material >= 0)
-		ev->out->materials[obj.material].used = true;
+		return false;
+	const struct csg_frame *f = ev->csg;
+	if (f && f->xform >= 0 && !moved) {
+		obj->xform = f->xform;
+	} else if (f && f->xform >= 0) {
+		compose(&x, o->xforms[f->xform].m);
+		if (!finite_xform(&x)) {
+			eval_error_span(ev, s, s->u.stmt.kw_span,
+			                "the transforms of this object and of the CSGs around it make it too large to be numbers");
+			return false;
+		}
+	}
 	if (moved) {
-		struct scene_desc *o = ev->out;
 		xgrow((void **)&o->xforms, &o->cap_xforms, o->nxforms + 1, sizeof *o->xforms);
 		o->xforms[o->nxforms] = x;
-		obj.xform = (int)o->nxforms++;
+		obj->xform = (int)o->nxforms++;
 	}
-	obj.pattern_xform = obj.xform;
-	obj.solid = kw == KW_SPHERE || kw == KW_PLANE;
-	if (kw == KW_TRIANGLE) {
+	obj->pattern_xform = obj->xform;
+	if (!own_material && f) {
+		obj->material = f->material;
+		obj->pattern_xform = f->pattern_xform;
+	}
+	if (obj->material >= 0)
+		o->materials[obj->material].used = true;
+	return true;
+}
+
+void eval_shape(struct evaluator *ev, struct ast *s, const struct source *src)
+{
+	struct object_desc obj = { .material = -1, .xform = -1, .pattern_xform = -1, .span = s->span };
+	bool ok = shape_values(ev, s, &obj, src);
+	ok = object_items(ev, s, &obj) && ok;
+	if (!ok)
+		return;
+	switch (obj.kind) {
+	case OBJ_TRIANGLE: case OBJ_DISC:
+		obj.solid = false;
+		break;
+	case OBJ_CYLINDER: case OBJ_CONE:
+		obj.solid = !obj.open;
+		break;
+	case OBJ_MESH:
+		obj.solid = ev->out->meshes[obj.u.mesh.index].has_inside_vector;
+		break;
+	default:
+		obj.solid = true;
+		break;
+	}
+	if (obj.kind == OBJ_TRIANGLE) {
 		double e1[3], e2[3], n[3];
 		for (int k = 0; k < 3; k++) {
 			e1[k] = obj.u.triangle.v[1][k] - obj.u.triangle.v[0][k];
@@ -300,4 +495,48 @@ void eval_object(struct evaluator *ev, struct ast *s, const struct source *src)
 			diag_warning(ev->diag, s->u.stmt.kw_span, "this triangle has no area (its corners lie on a line); it is not drawn");
 	}
 	push_object(ev, s, &obj);
+}
+
+bool csg_begin(struct evaluator *ev, struct ast *s, struct csg_frame *frame)
+{
+	struct object_desc obj = { .kind = OBJ_CSG, .material = -1, .xform = -1, .pattern_xform = -1, .span = s->span };
+	obj.u.csg.op = (enum csg_op)(s->u.stmt.kw - KW_UNION);
+	*frame = (struct csg_frame){ .index = ev->out->nobjects, .failures = ev->failures, .outer = ev->csg };
+	if (!push_object(ev, s, &obj))
+		return false;
+	/* after an error here the members are still evaluated, for their own errors, as if
+	 * the CSG had no items; then csg_end drops it */
+	if (object_items(ev, s, &obj))
+		ev->out->objects[frame->index] = obj;
+	frame->xform = ev->out->objects[frame->index].xform;
+	frame->material = ev->out->objects[frame->index].material;
+	frame->pattern_xform = ev->out->objects[frame->index].pattern_xform;
+	ev->csg = frame;
+	return true;
+}
+
+void csg_end(struct evaluator *ev, struct ast *s)
+{
+	struct csg_frame *f = ev->csg;
+	struct scene_desc *o = ev->out;
+	ev->csg = f->outer;
+	if (ev->failures != f->failures) { /* an error of its own or of a member, reported */
+		o->nobjects = f->index;
+		return;
+	}
+	size_t size = o->nobjects - f->index - 1;
+	if (size == 0) {
+		eval_error_span(ev, s, s->u.stmt.kw_span, "this %s has no objects: its for loops made none",
+		                kw_name(s->u.stmt.kw));
+		o->nobjects = f->index;
+		return;
+	}
+	struct object_desc *csg = &o->objects[f->index];
+	csg->u.csg.size = (uint32_t)size;
+	/* intersection, difference and merge have solids only (check.c); a union is one when
+	 * its direct members are */
+	csg->solid = true;
+	for (size_t j = f->index + 1; csg->u.csg.op == CSG_UNION && j <= f->index + size;
+	     j += o->objects[j].kind == OBJ_CSG ? o->objects[j].u.csg.size + 1 : 1)
+		csg->solid &= o->objects[j].solid;
 }

@@ -10,14 +10,16 @@
 static const char *const names[KW_COUNT_ALL] = {
 	"let", "include", "for", "in", "camera", "light", "material", "sphere",
 	"plane", "triangle", "mesh", "skybox", "samples", "max_depth",
+	"box", "cylinder", "cone", "disc", "torus",
+	"union", "merge", "intersection", "difference",
 	"location", "look_at", "up", "fov", "resolution", "position", "direction",
 	"color", "intensity", "shadowless", "like", "diffuse", "specular", "shininess",
 	"reflect", "transmit", "ior", "fresnel", "emit", "translate", "rotate", "scale",
 	"smooth", "vertices", "faces", "normals", "zenith", "horizon", "image", "count",
-	"pattern", "seed", "target_error",
+	"pattern", "seed", "target_error", "open", "inverse", "inside_vector",
 };
 
-enum { TABLE_SIZE = 256 }; /* a power of two, over five times the keyword count */
+enum { TABLE_SIZE = 512 }; /* a power of two, over five times the keyword count */
 
 static signed char table[TABLE_SIZE]; /* keyword code + 1, or 0 for an empty slot */
 static bool filled;

@@ -1,7 +1,9 @@
-/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4 and 5) -> AST.
+/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5 and 9) -> AST.
  * Every statement starts with a keyword. Blocks are generic (positional arguments, then
  * attribute items) so that check.c, not the grammar, knows which attribute belongs where
- * and can say "unknown attribute 'radus' in sphere; did you mean 'radius'?". */
+ * and can say "unknown attribute 'radus' in sphere; did you mean 'radius'?". A CSG block
+ * is as generic: its members and items in any order, and any statement besides, which
+ * check.c then says does not belong there. */
 
 %code top {
 #include "config.h"
@@ -75,16 +77,17 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token POV_COLOUR "rgb"               /* POV-Ray's rgb, rgbf, ...: reserved for a message */
 %token <kw> ATTR "attribute name"
 %token <kw> ITEMS_KW "statement keyword"   /* camera light skybox: { ITEMS } */
-%token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle: { ARGS ITEMS } */
+%token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle box cylinder cone disc torus: { ARGS ITEMS } */
+%token <kw> CSG_KW "CSG keyword"       /* union merge intersection difference: { MEMBERS ITEMS } */
 %token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
 %token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
 %token DOTDOT "'..'"
 %token BAD "invalid character"   /* the lexer has reported it; the parser only recovers */
 
-%type <node> stmt expr postfix primary arg item
+%type <node> stmt object member expr postfix primary arg item attr_item
 %type <name> name binder
-%type <list> stmts items args opt_args call_args
-%type <block> items_block args_block mesh_block list_block
+%type <list> stmts items members args opt_args call_args
+%type <block> items_block args_block mesh_block list_block csg_block
 
 /* An attribute followed by an identifier takes it as its value (`material glass`,
  * `pattern grid`) rather than ending with no value: shift, by this precedence. */
@@ -105,7 +108,8 @@ stmts:
 |	stmts stmt                          { $$ = $1; if (!statement(ctx, &$$, $2, FILE_LEVEL)) YYABORT; }
 ;
 stmt:
-	LET binder '=' expr                 { $$ = ast_let(A, @$, $2, @2, $4); }
+	object
+|	LET binder '=' expr                 { $$ = ast_let(A, @$, $2, @2, $4); }
 |	LET binder '=' error                { $$ = ast_let(A, @$, $2, @2, ast_new(A, AST_ERROR, @4)); } /* still binds */
 |	INCLUDE STRING                      { $$ = $2.text ? ast_include(A, @$, $2.text, @2) : NULL; }
 |	FOR IDENT IN expr DOTDOT expr '{' stmts '}'
@@ -115,14 +119,49 @@ stmt:
 |	MATERIAL binder items_block         { $$ = ast_block_stmt(A, @$, $1, @1, $3, NULL);
 	                                      $$->u.stmt.name = $2; $$->u.stmt.name_span = @2; }
 |	ITEMS_KW items_block                { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
-|	ARGS_KW args_block                  { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
-|	MESH mesh_block                     { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
 |	SAMPLES items_block                 { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
 |	SAMPLES expr                        { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
 |	MAX_DEPTH expr                      { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
 |	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	error                               { $$ = NULL; }
+;
+object:
+	ARGS_KW args_block                  { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	MESH mesh_block                     { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	CSG_KW csg_block                    { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+;
+
+/* A CSG block, and the body of a for loop in one: members (objects, for loops) and items
+ * in any order. The other statements are read as they are elsewhere, for check.c to say
+ * what a CSG holds; an unknown name is a statement, which check.c may read as a misspelt
+ * attribute or object. An error skips to the next member or item, or to the '}'. */
+csg_block:
+	'{' members '}'                     { $$ = ast_csg_block(A, @1, $2); }
+;
+members:
+	%empty                              { $$ = no_list; }
+|	members member                      { $$ = append(ctx, $1, $2); }
+;
+member:
+	object
+|	attr_item
+|	FOR IDENT IN expr DOTDOT expr '{' members '}'
+	                                    { $$ = ast_for(A, @$, $2, @2, $4, $6, $8); }
+|	FOR IDENT error '{' members '}'     { $$ = ast_for(A, @$, $2, @2, ast_new(A, AST_ERROR, @3),
+	                                                   ast_new(A, AST_ERROR, @3), $5); }
+|	LET binder '=' expr                 { $$ = ast_let(A, @$, $2, @2, $4); }
+|	LET binder '=' error                { $$ = ast_let(A, @$, $2, @2, ast_new(A, AST_ERROR, @4)); }
+|	INCLUDE STRING                      { $$ = $2.text ? ast_include(A, @$, $2.text, @2) : NULL; }
+|	MATERIAL IDENT items_block          { $$ = ast_block_stmt(A, @$, $1, @1, $3, NULL);
+	                                      $$->u.stmt.name = $2; $$->u.stmt.name_span = @2; }
+|	ITEMS_KW items_block                { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	SAMPLES items_block                 { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
+|	SAMPLES expr                        { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
+|	MAX_DEPTH expr                      { $$ = ast_block_stmt(A, @$, $1, @1, NULL, $2); }
+|	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); $$->kind = AST_UNKNOWN_STMT; }
+|	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); $$->kind = AST_UNKNOWN_STMT; }
+|	error                               { $$ = ast_new(A, AST_ERROR, @$); } /* the block is broken */
 ;
 
 /* Recovery: an error inside braces skips to the closing brace. */
@@ -148,12 +187,15 @@ items:
 |	items item                          { $$ = append(ctx, $1, $2); }
 ;
 item:
+	attr_item
+|	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); }
+|	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); } /* pigment { ... } */
+;
+attr_item:
 	ATTR opt_args                       { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	ATTR list_block                     { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 |	MATERIAL opt_args                   { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
-|	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); }
-|	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); } /* pigment { ... } */
 ;
 name:
 	IDENT
@@ -166,6 +208,7 @@ binder:
 |	ATTR                                { $$ = reserved(ctx, @1); }
 |	ITEMS_KW                            { $$ = reserved(ctx, @1); }
 |	ARGS_KW                             { $$ = reserved(ctx, @1); }
+|	CSG_KW                              { $$ = reserved(ctx, @1); }
 |	MATERIAL                            { $$ = reserved(ctx, @1); }
 |	MESH                                { $$ = reserved(ctx, @1); }
 |	SAMPLES                             { $$ = reserved(ctx, @1); }
@@ -184,7 +227,7 @@ soup:
 |	soup '{' soup '}'
 ;
 soup_token:
-	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {}
+	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {} | CSG_KW {}
 |	MATERIAL {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
 |	DOTDOT | BAD | POV_COLOUR | '(' | ')' | '<' | '>' | ',' | '.' | '=' | '+' | '-' | '*' | '/'
 ;
@@ -392,7 +435,8 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 		attribute |= expected[i] == YYSYMBOL_ATTR;
 		name |= expected[i] == YYSYMBOL_IDENT;
 	}
-	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_MATERIAL
+	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW
+	            || got == YYSYMBOL_MATERIAL
 	            || got == YYSYMBOL_MESH || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH || got == YYSYMBOL_LET
 	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN;
 	if (keyword && name && !value && !attribute) { /* let count = 3: a new name was wanted */
@@ -410,7 +454,9 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 			names[m++] = listed;
 	}
 	char list[512] = "";
-	if (statement) {
+	if (statement && attribute) { /* in a CSG block */
+		snprintf(list, sizeof list, "; expected an object or an attribute");
+	} else if (statement) {
 		snprintf(list, sizeof list, "; expected a statement");
 	} else if (m > 0 && m <= MAX_LISTED) {
 		size_t used = 0;
@@ -432,7 +478,7 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 	 * looks like what follows a missing closer: the end, a statement, another closer. */
 	const char *got_name = yysymbol_name(got);
 	bool missing = got == YYSYMBOL_YYEOF || got == YYSYMBOL_LET || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR
-	            || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_MESH
+	            || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW || got == YYSYMBOL_MESH
 	            || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH
 	            || strcmp(got_name, "'}'") == 0 || strcmp(got_name, "')'") == 0 || strcmp(got_name, "'>'") == 0;
 	if (k > 0 && missing) {

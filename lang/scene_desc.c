@@ -139,10 +139,36 @@ static void dump_mesh(const struct mesh_desc *m, FILE *out)
 	}
 }
 
-static void dump_object(const struct scene_desc *s, const struct object_desc *o, size_t i, FILE *out)
+static void dump_xform(const struct scene_desc *s, const char *name, int index, FILE *out)
 {
-	static const char *const kinds[] = { "sphere", "plane", "triangle", "mesh" };
-	fprintf(out, "%s %zu", kinds[o->kind], i);
+	if (index < 0) {
+		fprintf(out, " %s identity", name);
+		return;
+	}
+	const struct xform *x = &s->xforms[index];
+	fprintf(out, " %s [", name);
+	for (int r = 0; r < 3; r++)
+		for (int c = 0; c < 4; c++) {
+			if (r || c)
+				fputs(c ? " " : "; ", out);
+			num(out, x->m[r][c]);
+		}
+	fputc(']', out);
+}
+
+/* One object on its line, indented two spaces for each CSG around it. */
+static void dump_object(const struct scene_desc *s, const struct object_desc *o, size_t i, unsigned depth, FILE *out)
+{
+	static const char *const kinds[] = {
+		[OBJ_SPHERE] = "sphere", [OBJ_PLANE] = "plane", [OBJ_TRIANGLE] = "triangle", [OBJ_MESH] = "mesh",
+		[OBJ_BOX] = "box", [OBJ_CYLINDER] = "cylinder", [OBJ_CONE] = "cone", [OBJ_DISC] = "disc",
+		[OBJ_TORUS] = "torus", [OBJ_CSG] = "csg",
+	};
+	static const char *const ops[] = {
+		[CSG_UNION] = "union", [CSG_MERGE] = "merge", [CSG_INTERSECTION] = "intersection",
+		[CSG_DIFFERENCE] = "difference",
+	};
+	fprintf(out, "%*s%s %zu", 2 * (int)depth, "", o->kind == OBJ_CSG ? ops[o->u.csg.op] : kinds[o->kind], i);
 	switch (o->kind) {
 	case OBJ_SPHERE:
 		field_vec(out, "center", o->u.sphere.center);
@@ -159,25 +185,68 @@ static void dump_object(const struct scene_desc *s, const struct object_desc *o,
 	case OBJ_MESH:
 		dump_mesh(&s->meshes[o->u.mesh.index], out);
 		break;
+	case OBJ_BOX:
+		field_vec(out, "corner", o->u.box.corner[0]);
+		field_vec(out, "corner", o->u.box.corner[1]);
+		break;
+	case OBJ_CYLINDER:
+		field_vec(out, "base", o->u.cone.base);
+		field_vec(out, "cap", o->u.cone.cap);
+		field_num(out, "radius", o->u.cone.radius[0]);
+		break;
+	case OBJ_CONE:
+		field_vec(out, "base", o->u.cone.base);
+		field_num(out, "base_radius", o->u.cone.radius[0]);
+		field_vec(out, "cap", o->u.cone.cap);
+		field_num(out, "cap_radius", o->u.cone.radius[1]);
+		break;
+	case OBJ_DISC:
+		field_vec(out, "center", o->u.disc.center);
+		field_vec(out, "normal", o->u.disc.normal);
+		field_num(out, "radius", o->u.disc.radius);
+		if (o->u.disc.hole > 0)
+			field_num(out, "hole", o->u.disc.hole);
+		break;
+	case OBJ_TORUS:
+		field_num(out, "major", o->u.torus.major);
+		field_num(out, "minor", o->u.torus.minor);
+		break;
+	case OBJ_CSG:
+		fprintf(out, " size %u", (unsigned)o->u.csg.size);
+		break;
 	}
 	if (o->smooth)
 		fputs(" smooth", out);
+	if (o->open)
+		fputs(" open", out);
+	if (o->kind == OBJ_MESH && s->meshes[o->u.mesh.index].has_inside_vector)
+		field_vec(out, "inside_vector", s->meshes[o->u.mesh.index].inside_vector);
+	if (o->inverse)
+		fputs(" inverse", out);
+	if (o->solid)
+		fputs(" solid", out);
 	if (o->material >= 0)
 		fprintf(out, " material %d", o->material);
 	else
 		fputs(" material default", out);
-	if (o->xform >= 0) {
-		const struct xform *x = &s->xforms[o->xform];
-		fputs(" transform [", out);
-		for (int r = 0; r < 3; r++)
-			for (int c = 0; c < 4; c++) {
-				if (r || c)
-					fputs(c ? " " : "; ", out);
-				num(out, x->m[r][c]);
-			}
-		fputc(']', out);
-	}
+	if (o->xform >= 0)
+		dump_xform(s, "transform", o->xform, out);
+	if (o->pattern_xform != o->xform) /* a material a CSG handed down lives in its space */
+		dump_xform(s, "pattern_transform", o->pattern_xform, out);
 	fputc('\n', out);
+}
+
+/* Objects [from, to) of s, a CSG's members after it, one level deeper. */
+static void dump_objects(const struct scene_desc *s, size_t from, size_t to, unsigned depth, FILE *out)
+{
+	for (size_t i = from; i < to; i++) {
+		const struct object_desc *o = &s->objects[i];
+		dump_object(s, o, i, depth, out);
+		if (o->kind == OBJ_CSG) {
+			dump_objects(s, i + 1, i + 1 + o->u.csg.size, depth + 1, out);
+			i += o->u.csg.size;
+		}
+	}
 }
 
 void scene_desc_dump(const struct scene_desc *s, FILE *out)
@@ -231,6 +300,5 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 	}
 	for (size_t i = 0; i < s->nmaterials; i++)
 		dump_material(&s->materials[i], i, out);
-	for (size_t i = 0; i < s->nobjects; i++)
-		dump_object(s, &s->objects[i], i, out);
+	dump_objects(s, 0, s->nobjects, 0, out);
 }

@@ -88,9 +88,8 @@ static const char *const pov_words[][2] = {
 
 /* Shapes POV-Ray has and scn has not. */
 static const char *const pov_shapes[] = {
-	"box", "cylinder", "cone", "torus", "disc", "blob", "lathe", "sor", "prism", "superellipsoid",
-	"height_field", "isosurface", "text", "polygon", "bicubic_patch", "union", "difference",
-	"intersection", "merge", "quadric", "poly", "cubic", "quartic", "ovus", "parametric",
+	"blob", "lathe", "sor", "prism", "superellipsoid", "height_field", "isosurface", "text", "polygon",
+	"bicubic_patch", "quadric", "poly", "cubic", "quartic", "ovus", "parametric",
 };
 
 /* "; HINT" for a name POV-Ray users write, or NULL. */
@@ -103,7 +102,8 @@ const char *suggest_pov_hint(const char *name, char *buf, size_t size)
 		}
 	for (size_t i = 0; i < sizeof pov_shapes / sizeof pov_shapes[0]; i++)
 		if (strcmp(name, pov_shapes[i]) == 0) {
-			snprintf(buf, size, " (scn has spheres, planes, triangles and meshes: model it as a mesh)");
+			snprintf(buf, size, " (scn has spheres, planes, triangles, meshes, boxes, cylinders, cones, discs, "
+			         "tori and their CSG: model it with those, or as a mesh)");
 			return buf;
 		}
 	return NULL;

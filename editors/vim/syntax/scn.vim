@@ -10,11 +10,13 @@ endif
 
 " statements, then attributes; every one of them is reserved
 syn keyword scnStatement let include for in camera light material sphere plane triangle mesh
-syn keyword scnStatement skybox samples max_depth
+syn keyword scnStatement skybox samples max_depth box cylinder cone disc torus union merge
+syn keyword scnStatement intersection difference
 syn keyword scnAttribute location look_at up fov resolution position direction color
 syn keyword scnAttribute intensity shadowless like diffuse specular shininess reflect transmit
 syn keyword scnAttribute ior fresnel emit translate rotate scale smooth vertices faces normals
-syn keyword scnAttribute zenith horizon image count pattern seed target_error
+syn keyword scnAttribute zenith horizon image count pattern seed target_error open inverse
+syn keyword scnAttribute inside_vector
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees pow
 syn keyword scnFunction mod atan2 min max dot cross normalize length rand checker
 syn keyword scnConstant pi
