@@ -387,8 +387,9 @@ static bool finite_xform(const struct xform *x)
 
 /* The items of object s into obj: the ones every object takes (material, transforms,
  * inverse) and a shape's own (open, smooth, inside_vector); then what the enclosing CSG
- * hands down: its transform, after obj's own, and its material when obj has none (whose
- * patterns then live in the CSG's space). False after an error. */
+ * hands down: its transform, after obj's own, and its material, if it has one, when obj
+ * has none (whose patterns then live in the CSG's space: the default material has none).
+ * False after an error. */
 static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc *obj)
 {
 	struct ast_block *block = s->u.stmt.block;
@@ -454,7 +455,7 @@ static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc
 		obj->xform = (int)o->nxforms++;
 	}
 	obj->pattern_xform = obj->xform;
-	if (!own_material && f) {
+	if (!own_material && f && f->material >= 0) {
 		obj->material = f->material;
 		obj->pattern_xform = f->pattern_xform;
 	}
