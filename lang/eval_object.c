@@ -4,6 +4,7 @@
  * them in preorder and take their transforms and material; and materials. */
 #include "eval_internal.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -358,12 +359,16 @@ static bool shape_values(struct evaluator *ev, struct ast *s, struct object_desc
 		double (*c)[3] = obj->u.box.corner;
 		obj->kind = OBJ_BOX;
 		ok = vec_of(ev, args->v[0], c[0]) & vec_of(ev, args->v[1], c[1]);
+		char same[128] = "";
+		size_t used = 0;
 		for (int k = 0; k < 3 && ok; k++)
-			if (c[0][k] == c[1][k]) {
-				eval_error(ev, args->v[1], "a box's corners must differ in x, y and z; both have %c = %s",
-				           "xyz"[k], num_text(c[0][k], nb));
-				ok = false;
-			}
+			if (c[0][k] == c[1][k])
+				used += (size_t)snprintf(same + used, sizeof same - used, "%s%c = %s", used ? ", " : "", "xyz"[k],
+				                         num_text(c[0][k], nb));
+		if (used) {
+			eval_error(ev, args->v[1], "a box's corners must differ in x, y and z; both have %s", same);
+			ok = false;
+		}
 		return ok;
 	}
 	case KW_CYLINDER: case KW_CONE:
