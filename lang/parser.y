@@ -135,7 +135,8 @@ object:
 /* A CSG block, and the body of a for loop in one: members (objects, for loops) and items
  * in any order. The other statements are read as they are elsewhere, for check.c to say
  * what a CSG holds; an unknown name is a statement, which check.c may read as a misspelt
- * attribute or object. An error skips to the next member or item, or to the '}'. */
+ * attribute or object. An error skips to the next member or item, or to the '}'; a block
+ * that comes next is skipped whole, its inner '}' with it. */
 csg_block:
 	'{' members '}'                     { $$ = ast_csg_block(A, @1, $2); }
 ;
@@ -162,6 +163,7 @@ member:
 |	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	error                               { $$ = ast_new(A, AST_ERROR, @$); } /* the block is broken */
+|	error soup_block                    { $$ = ast_new(A, AST_ERROR, @$); } /* skipped whole: not read as members */
 ;
 
 /* Recovery: an error inside braces skips to the closing brace. */
