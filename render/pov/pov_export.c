@@ -23,6 +23,7 @@
 #include "outfile.h"
 #include "pov_docdir.h"
 #include "pov_material.h"
+#include "pov_mesh.h"
 #include "pov_write.h"
 #include "xalloc.h"
 
@@ -68,36 +69,6 @@ static void note(struct pov *p, const char *fmt, ...)
 	p->notes_len += (size_t)n;
 }
 
-/* "matrix <...>": POV-Ray's twelve numbers are the columns of scn's map, the
- * translation last. */
-static void write_matrix(FILE *f, const struct affine *a)
-{
-	fputs("matrix <", f);
-	for (int col = 0; col < 4; col++)
-		for (int row = 0; row < 3; row++) {
-			pov_num(f, a->m[row][col]);
-			if (col < 3 || row < 2)
-				fputs(", ", f);
-		}
-	fputc('>', f);
-}
-
-/* The material of a surface; a checker in object space gets the object's transform: POV-
- * Ray applies the inverse of a transform to the point, and `inverse` makes that inverse
- * exactly scn's to_object map. */
-static void material_ref(struct pov *p, uint32_t surface)
-{
-	FILE *f = p->f;
-	const struct surface *s = &p->sc->geo.surfaces[surface];
-	fprintf(f, "material { scn_material_%u", (unsigned)s->material);
-	if (s->to_object >= 0 && p->sc->materials[s->material].checker) {
-		fputs(" transform { ", f);
-		write_matrix(f, &p->sc->affines[s->to_object]);
-		fputs(" inverse }", f);
-	}
-	fputs(" }", f);
-}
-
 /* --- geometry --- */
 
 /* triangle { ... } or smooth_triangle { ... } in double precision, without a material. */
@@ -120,7 +91,7 @@ static void triangle_body(struct pov *p, size_t i)
 static void write_triangle(struct pov *p, size_t i)
 {
 	triangle_body(p, i);
-	material_ref(p, p->sc->geo.triangles[i].surface);
+	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[i].surface);
 	fputs(" }\n", p->f);
 }
 
@@ -135,147 +106,16 @@ static void write_union(struct pov *p, size_t first, size_t last)
 		fputs("}\n", f);
 	}
 	fputs("  ", f);
-	material_ref(p, p->sc->geo.triangles[first].surface);
+	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface);
 	fputs("\n}\n", f);
-}
-
-/* A mesh2's coordinates: in world space, or, for own (a mesh file's use), in the file's
- * own space, into which own's to_object map takes the world-space vertices back and the
- * transpose of its to_world map the normals (POV-Ray's matrix then brings them out). */
-static struct vec3 mesh_vertex(const struct scene *sc, const struct mesh_use *own, uint32_t v)
-{
-	return own ? affine_point(&own->to_object, sc->geo.vertices[v]) : sc->geo.vertices[v];
-}
-
-static struct vec3 mesh_normal(const struct scene *sc, const struct mesh_use *own, uint32_t n)
-{
-	struct vec3 w = sc->geo.normals[n];
-	return own ? vunit(affine_normal(&own->to_world, w)) : w;
-}
-
-static struct vec3 geometric_normal(const struct scene *sc, const struct mesh_use *own, const struct triangle *t)
-{
-	struct vec3 a = mesh_vertex(sc, own, t->v[0]), b = mesh_vertex(sc, own, t->v[1]), c = mesh_vertex(sc, own, t->v[2]);
-	return vcross(vsub(b, a), vsub(c, a));
-}
-
-/* The vertices and normals that triangles [first, last) use, as index ranges. */
-struct mesh_span {
-	uint32_t vmin, vmax, nmin, nmax;
-	size_t flat, smooth;           /* faces of each kind */
-	bool per_vertex;               /* normal k of a face is its vertex k's, shifted alike */
-};
-
-static struct mesh_span mesh_span(const struct scene *sc, size_t first, size_t last)
-{
-	struct mesh_span m = { UINT32_MAX, 0, UINT32_MAX, 0, 0, 0, true };
-	for (size_t i = first; i < last; i++) {
-		const struct triangle *t = &sc->geo.triangles[i];
-		for (int k = 0; k < 3; k++) {
-			m.vmin = t->v[k] < m.vmin ? t->v[k] : m.vmin;
-			m.vmax = t->v[k] > m.vmax ? t->v[k] : m.vmax;
-			if (t->n[0] != TRIANGLE_FLAT) {
-				m.nmin = t->n[k] < m.nmin ? t->n[k] : m.nmin;
-				m.nmax = t->n[k] > m.nmax ? t->n[k] : m.nmax;
-			}
-		}
-		if (t->n[0] == TRIANGLE_FLAT)
-			m.flat++;
-		else
-			m.smooth++;
-	}
-	if (m.smooth)
-		for (size_t i = first; i < last && m.per_vertex; i++) {
-			const struct triangle *t = &sc->geo.triangles[i];
-			for (int k = 0; k < 3; k++)
-				m.per_vertex &= t->n[0] != TRIANGLE_FLAT && t->n[k] - m.nmin == t->v[k] - m.vmin;
-		}
-	m.per_vertex &= m.smooth && m.nmax - m.nmin == m.vmax - m.vmin;
-	return m;
-}
-
-/* Whether the n triangles from a and those from b are the same faces on the same vertex
- * and normal indices, each counted from its run's first; swap: corners 1 and 2 of b's
- * faces swapped (lowering swaps them under a mirroring transform). */
-static bool same_faces(const struct scene *sc, size_t a, size_t b, size_t n, bool swap)
-{
-	struct mesh_span sa = mesh_span(sc, a, a + n), sb = mesh_span(sc, b, b + n);
-	if (sa.vmax - sa.vmin != sb.vmax - sb.vmin || sa.smooth != sb.smooth ||
-	    (sa.smooth && sa.nmax - sa.nmin != sb.nmax - sb.nmin))
-		return false;
-	static const int kept[3] = { 0, 1, 2 }, swapped[3] = { 0, 2, 1 };
-	const int *corner = swap ? swapped : kept;
-	for (size_t i = 0; i < n; i++) {
-		const struct triangle *s = &sc->geo.triangles[a + i], *t = &sc->geo.triangles[b + i];
-		if ((s->n[0] == TRIANGLE_FLAT) != (t->n[0] == TRIANGLE_FLAT))
-			return false;
-		for (int k = 0; k < 3; k++)
-			if (s->v[k] - sa.vmin != t->v[corner[k]] - sb.vmin ||
-			    (s->n[0] != TRIANGLE_FLAT && s->n[k] - sa.nmin != t->n[corner[k]] - sb.nmin))
-				return false;
-	}
-	return true;
-}
-
-/* Triangles [first, last) of one surface as "mesh2 { ..." up to its material, in world
- * space or own's (mesh_vertex). */
-static void mesh2_body(struct pov *p, size_t first, size_t last, const struct mesh_use *own)
-{
-	const struct scene *sc = p->sc;
-	FILE *f = p->f;
-	struct mesh_span m = mesh_span(sc, first, last);
-	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(m.vmax - m.vmin + 1));
-	for (uint32_t v = m.vmin; v <= m.vmax; v++) {
-		fputs(v % 4 == m.vmin % 4 ? ",\n    " : ", ", f);
-		pov_fvec(f, mesh_vertex(sc, own, v));
-	}
-	fputs(" }\n", f);
-	if (m.smooth) {
-		/* a flat face among smooth ones gets three copies of its geometric normal,
-		 * which POV-Ray shades flat */
-		size_t nn = (size_t)(m.nmax - m.nmin + 1) + m.flat;
-		fprintf(f, "  normal_vectors { %zu", nn);
-		size_t k = 0;
-		for (uint32_t n = m.nmin; n <= m.nmax; n++, k++) {
-			fputs(k % 4 == 0 ? ",\n    " : ", ", f);
-			pov_fvec(f, mesh_normal(sc, own, n));
-		}
-		for (size_t i = first; i < last; i++)
-			if (sc->geo.triangles[i].n[0] == TRIANGLE_FLAT) {
-				fputs(k++ % 4 == 0 ? ",\n    " : ", ", f);
-				pov_fvec(f, vnorm(geometric_normal(sc, own, &sc->geo.triangles[i])));
-			}
-		fputs(" }\n", f);
-	}
-	fprintf(f, "  face_indices { %zu", last - first);
-	for (size_t i = first; i < last; i++) {
-		const uint32_t *v = sc->geo.triangles[i].v;
-		fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", (unsigned long)(v[0] - m.vmin),
-		        (unsigned long)(v[1] - m.vmin), (unsigned long)(v[2] - m.vmin));
-	}
-	fputs(" }\n", f);
-	if (m.smooth && !m.per_vertex) {
-		fprintf(f, "  normal_indices { %zu", last - first);
-		size_t extra = (size_t)(m.nmax - m.nmin + 1);
-		for (size_t i = first; i < last; i++) {
-			const uint32_t *n = sc->geo.triangles[i].n;
-			unsigned long a, b, c;
-			if (n[0] == TRIANGLE_FLAT)
-				a = b = c = (unsigned long)extra++;
-			else
-				a = n[0] - m.nmin, b = n[1] - m.nmin, c = n[2] - m.nmin;
-			fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", a, b, c);
-		}
-		fputs(" }\n", f);
-	}
 }
 
 /* Triangles [first, last) of one surface, as a mesh2 in world space. */
 static void write_mesh2(struct pov *p, size_t first, size_t last)
 {
-	mesh2_body(p, first, last, NULL);
+	pov_mesh2_body(p->f, p->sc, p->sc->geo.triangles, first, last, NULL);
 	fputs("  ", p->f);
-	material_ref(p, p->sc->geo.triangles[first].surface);
+	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface);
 	fputs("\n}\n", p->f);
 }
 
@@ -289,13 +129,13 @@ static void write_placed(struct pov *p, size_t first, size_t last, int32_t u)
 	if (p->shares[u] == u) {
 		fprintf(f, "// scn_mesh_%u: a mesh file that several objects use, in its own coordinates;"
 		           " each object { } places it\n#declare scn_mesh_%u = ", (unsigned)use->mesh, (unsigned)use->mesh);
-		mesh2_body(p, first, last, use);
+		pov_mesh2_body(f, p->sc, p->sc->geo.triangles, first, last, use);
 		fputs("}\n", f);
 	}
 	fprintf(f, "object { scn_mesh_%u ", (unsigned)use->mesh);
-	write_matrix(f, &use->to_world);
+	pov_matrix(f, &use->to_world);
 	fputs(" ", f);
-	material_ref(p, use->surface);
+	pov_material_ref(p->f, p->sc, use->surface);
 	fputs(" }\n", f);
 }
 
@@ -380,7 +220,7 @@ static bool smooth_kept(const struct scene *sc, size_t i)
 	const struct triangle *t = &sc->geo.triangles[i];
 	if (t->n[0] == TRIANGLE_FLAT)
 		return true;
-	struct vec3 g = geometric_normal(sc, NULL, t);
+	struct vec3 g = pov_face_normal(sc, NULL, t);
 	double d0 = vdot(g, sc->geo.normals[t->n[0]]), d1 = vdot(g, sc->geo.normals[t->n[1]]),
 	       d2 = vdot(g, sc->geo.normals[t->n[2]]);
 	return (d0 > 0 && d1 > 0 && d2 > 0) || (d0 < 0 && d1 < 0 && d2 < 0);
@@ -509,7 +349,7 @@ static void find_shared(struct pov *p)
 			if (d < 0)
 				first_use[use->mesh] = u;
 			else if (run_end(sc, p->run_of[d]) - p->run_of[d] == last - first &&
-			         same_faces(sc, p->run_of[d], first, last - first, sc->mesh_uses[d].mirrored != use->mirrored))
+			         pov_same_faces(sc, p->run_of[d], first, last - first, sc->mesh_uses[d].mirrored != use->mirrored))
 				p->shares[u] = p->shares[d] = d;
 		}
 		first = last;
@@ -774,7 +614,7 @@ static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 
 	fputs(", ", p->f);
 	pov_num(p->f, x);
 	fputc(' ', p->f);
-	material_ref(p, surface);
+	pov_material_ref(p->f, p->sc, surface);
 	fputs(" }\n", p->f);
 }
 

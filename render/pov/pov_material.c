@@ -203,3 +203,17 @@ void pov_write_material(FILE *f, size_t index, const struct material *m)
 	}
 	fputs("}\n", f);
 }
+
+/* A checker in object space gets the object's transform: POV-Ray applies the inverse of
+ * a transform to the point, and `inverse` makes that inverse exactly scn's to_object map. */
+void pov_material_ref(FILE *f, const struct scene *sc, uint32_t surface)
+{
+	const struct surface *s = &sc->geo.surfaces[surface];
+	fprintf(f, "material { scn_material_%u", (unsigned)s->material);
+	if (s->to_object >= 0 && sc->materials[s->material].checker) {
+		fputs(" transform { ", f);
+		pov_matrix(f, &sc->affines[s->to_object]);
+		fputs(" inverse }", f);
+	}
+	fputs(" }", f);
+}

@@ -81,3 +81,17 @@ void pov_comment_text(FILE *f, const char *s)
 	for (; *s; s++)
 		fputc(*s == '\n' || *s == '\r' ? ' ' : *s, f);
 }
+
+/* "matrix <...>": POV-Ray's twelve numbers are the columns of scn's map, the translation
+ * last. */
+void pov_matrix(FILE *f, const struct affine *a)
+{
+	fputs("matrix <", f);
+	for (int col = 0; col < 4; col++)
+		for (int row = 0; row < 3; row++) {
+			pov_num(f, a->m[row][col]);
+			if (col < 3 || row < 2)
+				fputs(", ", f);
+		}
+	fputc('>', f);
+}

@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 
+#include "affine.h"
 #include "vec.h"
 
 /* The shortest decimal that reads back as v exactly. */
@@ -19,5 +20,7 @@ void pov_vec4(FILE *f, struct vec3 v, double w);
 void pov_str(FILE *f, const char *s);
 /* s on one comment line: line breaks become spaces. */
 void pov_comment_text(FILE *f, const char *s);
+/* "matrix <...>" of an affine map, each number as pov_num writes it. */
+void pov_matrix(FILE *f, const struct affine *a);
 
 #endif
