@@ -3,7 +3,8 @@
  * the sky, the lights, every material (pov_material.c: the single-layer recipe where exact,
  * the layered general recipe otherwise), and the world-space geometry (meshes as mesh2
  * in single precision, as POV-Ray stores them; a mesh file that several objects use is
- * declared once in its own space and placed by a matrix). The first lines are comments
+ * declared once in its own space and placed by a matrix; the solids of section 9 as
+ * POV-Ray's shapes and CSG, pov_solid.c). The first lines are comments
  * with the povray command line that renders it and whatever POV-Ray cannot reproduce
  * exactly. */
 #include "pov_export.h"
@@ -24,6 +25,7 @@
 #include "pov_docdir.h"
 #include "pov_material.h"
 #include "pov_mesh.h"
+#include "pov_solid.h"
 #include "pov_write.h"
 #include "xalloc.h"
 
@@ -91,7 +93,7 @@ static void triangle_body(struct pov *p, size_t i)
 static void write_triangle(struct pov *p, size_t i)
 {
 	triangle_body(p, i);
-	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[i].surface);
+	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[i].surface, false);
 	fputs(" }\n", p->f);
 }
 
@@ -106,7 +108,7 @@ static void write_union(struct pov *p, size_t first, size_t last)
 		fputs("}\n", f);
 	}
 	fputs("  ", f);
-	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface);
+	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface, false);
 	fputs("\n}\n", f);
 }
 
@@ -115,7 +117,7 @@ static void write_mesh2(struct pov *p, size_t first, size_t last)
 {
 	pov_mesh2_body(p->f, p->sc, p->sc->geo.triangles, first, last, NULL);
 	fputs("  ", p->f);
-	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface);
+	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface, false);
 	fputs("\n}\n", p->f);
 }
 
@@ -135,7 +137,7 @@ static void write_placed(struct pov *p, size_t first, size_t last, int32_t u)
 	fprintf(f, "object { scn_mesh_%u ", (unsigned)use->mesh);
 	pov_matrix(f, &use->to_world);
 	fputs(" ", f);
-	pov_material_ref(p->f, p->sc, use->surface);
+	pov_material_ref(p->f, p->sc, use->surface, false);
 	fputs(" }\n", f);
 }
 
@@ -372,6 +374,13 @@ static void scene_ball(const struct scene *sc, struct vec3 *centre, double *radi
 		lo = vmin(lo, sc->geo.vertices[i]);
 		hi = vmax(hi, sc->geo.vertices[i]);
 	}
+	for (size_t i = 0; i < sc->geo.nparts; i++) {
+		const struct part *pt = &sc->geo.parts[i];
+		if (pt->kind != PART_CSG && pt->kind != PART_PLANE) {  /* a leaf's surface bounds */
+			lo = vmin(lo, pt->lo);
+			hi = vmax(hi, pt->hi);
+		}
+	}
 	for (size_t i = 0; i < sc->nlights; i++)
 		if (sc->lights[i].kind == LIGHT_POINT) {
 			lo = vmin(lo, sc->lights[i].pos);
@@ -381,6 +390,11 @@ static void scene_ball(const struct scene *sc, struct vec3 *centre, double *radi
 	double r = vlen(vsub(hi, lo)) / 2;
 	for (size_t i = 0; i < sc->geo.nplanes; i++)
 		r = fmax(r, fabs(sc->geo.planes[i].offset - vdot(sc->geo.planes[i].normal, *centre)));
+	for (size_t i = 0; i < sc->geo.nparts; i++) {
+		const struct part *pt = &sc->geo.parts[i];
+		if (pt->kind == PART_PLANE)
+			r = fmax(r, fabs(pt->a[3] - vdot(v3(pt->a[0], pt->a[1], pt->a[2]), *centre)));
+	}
 	*radius = r;
 }
 
@@ -614,7 +628,7 @@ static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 
 	fputs(", ", p->f);
 	pov_num(p->f, x);
 	fputc(' ', p->f);
-	pov_material_ref(p->f, p->sc, surface);
+	pov_material_ref(p->f, p->sc, surface, false);
 	fputs(" }\n", p->f);
 }
 
@@ -638,6 +652,10 @@ static void write_objects(struct pov *p)
 			write_mesh2(p, first, last);
 		first = last;
 	}
+	for (size_t i = 0; i < sc->geo.nsolids; i++)
+		pov_write_solid(p->f, sc, sc->geo.solids[i]);
+	for (size_t i = 0; i < sc->geo.nunbounded; i++)
+		pov_write_solid(p->f, sc, sc->geo.unbounded[i]);
 }
 
 /* pov_export, naming the output what in its messages. */
@@ -664,8 +682,13 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	write_camera(&p);
 	write_sky(&p);
 	write_lights(&p);
+	/* the materials that members of a one-body solid take without their interior */
+	bool *shared = xcalloc(sc->nmaterials ? sc->nmaterials : 1, sizeof *shared);
+	for (size_t i = 0; i < sc->geo.nsolids + sc->geo.nunbounded; i++)
+		pov_solid_one_body(sc, i < sc->geo.nsolids ? sc->geo.solids[i] : sc->geo.unbounded[i - sc->geo.nsolids], shared);
 	for (size_t i = 0; i < sc->nmaterials; i++)
-		pov_write_material(out, i, &sc->materials[i]);
+		pov_write_material(out, i, &sc->materials[i], shared[i]);
+	free(shared);
 	write_objects(&p);
 	free(p.how);
 	free(p.use_of);

@@ -160,7 +160,22 @@ static void write_layers(FILE *f, const struct material *m)
 	}
 }
 
-void pov_write_material(FILE *f, size_t index, const struct material *m)
+bool pov_material_interior(const struct material *m, double *ior)
+{
+	*ior = pov_ior(m->ior);
+	return !vzero(m->transmit) || m->fresnel;
+}
+
+/* The material's textures, bottom first: one layer or the four of the general recipe. */
+static void write_textures(FILE *f, const struct material *m)
+{
+	if (single_layer(m))
+		write_single_layer(f, m);
+	else
+		write_layers(f, m);
+}
+
+void pov_write_material(FILE *f, size_t index, const struct material *m, bool shared)
 {
 	fprintf(f, "// scn material %zu: diffuse ", index);
 	if (m->checker) {
@@ -192,24 +207,31 @@ void pov_write_material(FILE *f, size_t index, const struct material *m)
 	bool single = single_layer(m);
 	fprintf(f, "#declare scn_material_%zu = material {%s\n", index,
 	        single ? "" : "  // general recipe: layers S, F, D, E (the last is on top)");
-	if (single)
-		write_single_layer(f, m);
-	else
-		write_layers(f, m);
-	if (!vzero(m->transmit) || m->fresnel) {
+	write_textures(f, m);
+	double ior;
+	bool interior = pov_material_interior(m, &ior);
+	if (interior) {
 		fputs("  interior { ior ", f);
-		pov_num(f, pov_ior(m->ior));
+		pov_num(f, ior);
 		fputs(" }\n", f);
 	}
 	fputs("}\n", f);
+	if (shared && interior) {
+		fprintf(f, "#declare scn_material_%zu_shared = material {  // without its interior: its solid's CSG"
+		           " holds one for all its members\n", index);
+		write_textures(f, m);
+		fputs("}\n", f);
+	}
 }
 
 /* A checker in object space gets the object's transform: POV-Ray applies the inverse of
  * a transform to the point, and `inverse` makes that inverse exactly scn's to_object map. */
-void pov_material_ref(FILE *f, const struct scene *sc, uint32_t surface)
+void pov_material_ref(FILE *f, const struct scene *sc, uint32_t surface, bool shared)
 {
 	const struct surface *s = &sc->geo.surfaces[surface];
-	fprintf(f, "material { scn_material_%u", (unsigned)s->material);
+	double ior;
+	fprintf(f, "material { scn_material_%u%s", (unsigned)s->material,
+	        shared && pov_material_interior(&sc->materials[s->material], &ior) ? "_shared" : "");
 	if (s->to_object >= 0 && sc->materials[s->material].checker) {
 		fputs(" transform { ", f);
 		pov_matrix(f, &sc->affines[s->to_object]);
