@@ -299,6 +299,28 @@ static void analyse(struct pov *p)
 		}
 	}
 	free(glass);
+	struct pov_solid_notes sn;
+	pov_solid_notes(sc, &sn);
+	if (sn.open)
+		note(p, "// %zu refracting disc(s) and open cylinder(s) or cone(s) have no inside: POV-Ray enters such an"
+		        " object at its first hit and leaves at the next, while scn decides by the side of each surface"
+		        " (not pixel-exact where rays refract through them)",
+		     sn.open);
+	if (sn.iors)
+		note(p, "// %zu transmitting solid(s) have members of different iors: POV-Ray tracks a ray's medium by"
+		        " object, scn refracts at each surface by its own ior against air (not pixel-exact where a ray"
+		        " enters through one member's surface and leaves through another's)",
+		     sn.iors);
+	if (sn.unions)
+		note(p, "// %zu union(s) inside a solid have transmitting members that may overlap: POV-Ray leaves a"
+		        " medium where scn enters a second member's surface (not pixel-exact where rays cross the overlap;"
+		        " merge is the one-body form)",
+		     sn.unions);
+	if (sn.overlaps)
+		note(p, "// %zu transmitting solid(s) may overlap another transmitting object: POV-Ray refracts by the"
+		        " ratio of the two objects' iors where a ray passes from one into the other, scn by each surface's"
+		        " ior against air (not pixel-exact there)",
+		     sn.overlaps);
 	size_t touching = 0;
 	for (size_t i = 0; i < sc->geo.nspheres; i++) {
 		const struct sphere *a = &sc->geo.spheres[i];

@@ -165,6 +165,81 @@ static void write_part(FILE *f, const struct scene *sc, uint32_t index, int dept
 	fputs("}\n", f);
 }
 
+/* Whether leaf p's material transmits; refracts: and bends (ior not 1). */
+static bool leaf_transmits(const struct scene *sc, const struct part *p, bool refracts)
+{
+	const struct material *m = &sc->materials[sc->geo.surfaces[p->surface].material];
+	return !vzero(m->transmit) && (!refracts || m->ior != 1);
+}
+
+/* Whether a leaf under part index transmits. */
+static bool transmits(const struct scene *sc, uint32_t index)
+{
+	const struct part *p = &sc->geo.parts[index];
+	if (p->kind != PART_CSG)
+		return leaf_transmits(sc, p, false);
+	for (uint32_t k = 0; k < p->count; k++)
+		if (transmits(sc, sc->geo.members[p->first + k]))
+			return true;
+	return false;
+}
+
+static bool boxes_meet(struct vec3 alo, struct vec3 ahi, struct vec3 blo, struct vec3 bhi)
+{
+	return alo.x < bhi.x && blo.x < ahi.x && alo.y < bhi.y && blo.y < ahi.y && alo.z < bhi.z && blo.z < ahi.z;
+}
+
+/* Adds to n what under part index POV-Ray will not compute as scn does: refracting open
+ * leaves, and unions whose transmitting members' bounds meet. */
+static void notes_under(const struct scene *sc, uint32_t index, struct pov_solid_notes *n)
+{
+	const struct part *p = &sc->geo.parts[index];
+	if (p->kind != PART_CSG) {
+		n->open += (p->kind == PART_DISC || (p->kind == PART_CONE && p->open)) && leaf_transmits(sc, p, true);
+		return;
+	}
+	const uint32_t *members = sc->geo.members + p->first;
+	bool meet = false;
+	for (uint32_t k = 0; k < p->count; k++) {
+		notes_under(sc, members[k], n);
+		for (uint32_t j = 0; j < k && p->op == PART_ALL && !meet; j++) {
+			const struct part *a = &sc->geo.parts[members[j]], *b = &sc->geo.parts[members[k]];
+			meet = boxes_meet(a->lo, a->hi, b->lo, b->hi) && transmits(sc, members[j]) && transmits(sc, members[k]);
+		}
+	}
+	n->unions += meet;
+}
+
+void pov_solid_notes(const struct scene *sc, struct pov_solid_notes *n)
+{
+	*n = (struct pov_solid_notes){ 0 };
+	const struct geometry *g = &sc->geo;
+	for (size_t i = 0; i < g->nsolids + g->nunbounded; i++) {
+		uint32_t root = i < g->nsolids ? g->solids[i] : g->unbounded[i - g->nsolids];
+		notes_under(sc, root, n);
+		double ior;
+		size_t count = 0;
+		bool distinct = false;
+		interiors(sc, root, &ior, &count, &distinct, NULL);
+		n->iors += distinct && transmits(sc, root);
+		/* bounded transmitting solids against each other and transmitting spheres: a
+		 * bounded search, enough for any hand-made scene */
+		if (i >= g->nsolids || g->nsolids + g->nspheres > 4096 || !transmits(sc, root))
+			continue;
+		const struct part *a = &g->parts[root];
+		bool meet = false;
+		for (size_t j = 0; j < g->nsolids && !meet; j++)
+			meet = j != i && boxes_meet(a->lo, a->hi, g->parts[g->solids[j]].lo, g->parts[g->solids[j]].hi) &&
+			       transmits(sc, g->solids[j]);
+		for (size_t j = 0; j < g->nspheres && !meet; j++) {
+			const struct sphere *b = &g->spheres[j];
+			meet = boxes_meet(a->lo, a->hi, vsub(b->center, v3s(b->radius)), vadd(b->center, v3s(b->radius))) &&
+			       !vzero(sc->materials[g->surfaces[b->surface].material].transmit);
+		}
+		n->overlaps += meet;
+	}
+}
+
 void pov_write_solid(FILE *f, const struct scene *sc, uint32_t root)
 {
 	double ior;

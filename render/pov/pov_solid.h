@@ -4,6 +4,7 @@
 #define SCN_POV_SOLID_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -24,5 +25,16 @@ bool pov_solid_one_body(const struct scene *sc, uint32_t root, bool *shared);
  * its canonical form placed by `matrix`, with `inverse` and its material, each CSG node as
  * union, intersection or merge of its members. */
 void pov_write_solid(FILE *f, const struct scene *sc, uint32_t root);
+
+/* What in a scene's solids POV-Ray will not compute as scn does (each a count), for the
+ * header's notes. */
+struct pov_solid_notes {
+	size_t iors;                   /* solids that transmit, whose members' interiors have several iors */
+	size_t open;                   /* refracting discs and open cylinders and cones: no inside */
+	size_t unions;                 /* unions in a solid whose transmitting members' bounds meet */
+	size_t overlaps;               /* transmitting solids whose bounds meet another transmitting
+	                                  solid's or sphere's */
+};
+void pov_solid_notes(const struct scene *sc, struct pov_solid_notes *n);
 
 #endif
