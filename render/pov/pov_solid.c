@@ -68,7 +68,8 @@ static void indent(FILE *f, int depth)
 		fputs("  ", f);
 }
 
-/* A leaf: its shape, matrix, inverse and material, on one line (a mesh on several). */
+/* A leaf: its shape, matrix, inverse and material, on one line (a mesh2 on several, at
+ * the left margin). */
 static void write_leaf(FILE *f, const struct scene *sc, const struct part *p, int depth, bool shared)
 {
 	indent(f, depth);
@@ -116,11 +117,8 @@ static void write_leaf(FILE *f, const struct scene *sc, const struct part *p, in
 		break;
 	case PART_MESH:                /* world-space triangles, in single precision as any mesh2 */
 		pov_mesh2_body(f, sc, sc->geo.part_triangles, p->first, p->first + p->count, NULL);
-		indent(f, depth);
 		fputs("  inside_vector ", f);
 		pov_vec(f, v3(p->a[0], p->a[1], p->a[2]));
-		fputc('\n', f);
-		indent(f, depth);
 		break;
 	case PART_CSG:
 		break;
@@ -135,7 +133,7 @@ static void write_leaf(FILE *f, const struct scene *sc, const struct part *p, in
 	 * the surface's own (LANGUAGE.md: the object's, or the CSG's it inherits from) */
 	fputc(' ', f);
 	pov_material_ref(f, sc, p->surface, shared);
-	fputs(" }\n", f);
+	fputs(p->kind == PART_MESH ? "\n}\n" : " }\n", f);
 }
 
 /* Part index and its members, at depth; shared: the materials without their interiors.
