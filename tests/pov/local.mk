@@ -54,6 +54,7 @@ POV_TESTS = \
 	tests/pov/solid_cylinder.scn \
 	tests/pov/solid_disc.scn \
 	tests/pov/solid_ellipsoid.scn \
+	tests/pov/solid_mirror.scn \
 	tests/pov/specular.scn \
 	tests/pov/tir.scn \
 	tests/pov/transforms.scn \
