@@ -2,7 +2,7 @@
 # whose pixel values are worked out by hand from LANGUAGE.md's shading model (each
 # .expect says how), checked by probe.
 check_PROGRAMS += tests/render/probe
-tests_render_probe_SOURCES = tests/render/probe.c
+tests_render_probe_SOURCES = tests/render/probe.c tests/render/probe_hit.c tests/render/probe_hit.h
 tests_render_probe_LDADD = $(SCN_LIBS)
 RENDER_TESTS = tests/render/emit.scn tests/render/blinn_phong.scn
 RENDER_TESTS += tests/render/lambert_60.scn tests/render/point_light.scn tests/render/two_lights.scn tests/render/default_material.scn tests/render/light_behind.scn tests/render/two_sided.scn
