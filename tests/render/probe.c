@@ -227,7 +227,7 @@ static long long count_off_shape(const struct image *img, const struct probe_cam
 {
 	real l[3] = { 0, 0, 0 };
 	if (kd) {
-		real n = sqrtl((real)light[0] * light[0] + (real)light[1] * light[1] + (real)light[2] * light[2]);
+		real n = sqrt((real)light[0] * light[0] + (real)light[1] * light[1] + (real)light[2] * light[2]);
 		for (int k = 0; k < 3; k++)
 			l[k] = light[k] / n;
 	}

@@ -15,7 +15,7 @@ static real dot(const real a[3], const real b[3])
 
 static void unit(real v[3])
 {
-	real n = sqrtl(dot(v, v));
+	real n = sqrt(dot(v, v));
 	for (int k = 0; k < 3; k++)
 		v[k] /= n;
 }
@@ -42,7 +42,7 @@ void probe_camera_setup(struct probe_camera *c, const double eye[3], const doubl
 	cross(u, c->dir, c->right);
 	unit(c->right);
 	cross(c->dir, c->right, c->up);
-	c->tan_half = tanl(fov * (3.14159265358979323846264338327950288L / 360));
+	c->tan_half = tan(fov * (3.14159265358979323846 / 360));
 	c->width = width;
 	c->height = height;
 	c->grid = grid;
@@ -51,8 +51,8 @@ void probe_camera_setup(struct probe_camera *c, const double eye[3], const doubl
 void probe_camera_ray(const struct probe_camera *c, int px, int py, int a, int b, real d[3])
 {
 	int g = c->grid;
-	real u = ((real)g * px + a + 0.5L) / ((real)g * c->width);
-	real v = ((real)g * py + b + 0.5L) / ((real)g * c->height);
+	real u = ((real)g * px + a + 0.5) / ((real)g * c->width);
+	real v = ((real)g * py + b + 0.5) / ((real)g * c->height);
 	real sx = (2 * u - 1) * c->tan_half, sy = (1 - 2 * v) * c->tan_half * ((real)c->height / c->width);
 	for (int k = 0; k < 3; k++)
 		d[k] = c->dir[k] + c->right[k] * sx + c->up[k] * sy;
@@ -77,7 +77,7 @@ static real sphere_t(const real oc[3], const real dc[3])
 	real disc = 1 - dot(f, f);
 	if (disc < 0)
 		return -1;
-	real h = sqrtl(disc / dd);
+	real h = sqrt(disc / dd);
 	return -b - h > 0 ? -b - h : -b + h > 0 ? -b + h : -1;
 }
 
@@ -129,21 +129,29 @@ static enum probe_side torus_side(const struct probe_shape *s, const real o[3], 
 	for (int k = 0; k < 3; k++)
 		w0[k] = s->c[k] - o[k];
 	real big = s->major, in2 = s->minor * lo * s->minor * lo, out2 = s->minor * hi * s->minor * hi;
-	/* F = |w|^2 - (w.d)^2 (w.d > 0) with w = w0 + R u(phi): |F''| <= 4 R^2 + 4 R |w| */
-	real m = 4 * big * big + 4 * big * (sqrtl(dot(w0, w0)) + big);
+	/* With u = (cos phi, 0, sin phi), w = w0 + R u and s = w.d = s0 + R (p cos + q sin):
+	 * |w|^2 = const + 2 R (w0x cos + w0z sin), and where s > 0
+	 * F = |w|^2 - s^2 = const + 2 R ((w0x - sd p) cos + (w0z - sd q) sin)
+	 *                   - R^2 ((p^2 - q^2) / 2 cos 2phi + p q sin 2phi),
+	 * trigonometric polynomials whose second derivatives are at most their first
+	 * harmonic's amplitude plus 4 times their second's; F is C^1 where s changes sign. */
+	real sd = dot(w0, d), p = d[0], q = d[2];
+	real a1 = 2 * big * hypot(w0[0] - sd * p, w0[2] - sd * q), a2 = big * big * (p * p + q * q) / 2;
+	real m = fmax(a1 + 4 * a2, 2 * big * hypot(w0[0], w0[2]));
+	m = fmax(m * (1 + 1e-12), 1e-300);    /* rounding of the bound itself; never 0 */
 	if (!isfinite(m) || !isfinite(dot(d, d)))
 		return PROBE_EDGE;        /* no NaN into the search, which would never drop an arc */
-	real h_stop = fmaxl(sqrtl(2 * (out2 - in2) / m), 1e-15L);
+	real h_stop = fmax(sqrt(2 * (out2 - in2) / m), 1e-15);
 	enum { START = 16, STACK = 256 };   /* each halving adds one arc: 16 + 50 levels */
 	struct arc stack[STACK];
 	int top = 0;
 	bool edge = false;
-	const real two_pi = 6.28318530717958647692528676655900577L;
+	const real two_pi = 6.28318530717958647692;
 	static real cosines[START + 1], sines[START + 1];
 	if (sines[START / 4] == 0)
 		for (int i = 0; i <= START; i++) {
-			cosines[i] = i == START ? 1 : cosl(two_pi * i / START);
-			sines[i] = i == START ? 0 : sinl(two_pi * i / START);
+			cosines[i] = i == START ? 1 : cos(two_pi * i / START);
+			sines[i] = i == START ? 0 : sin(two_pi * i / START);
 		}
 	real c0 = 1, s0 = 0, f0 = circle_dist2(s, w0, d, 1, 0);
 	if (f0 < in2)
@@ -167,7 +175,7 @@ static enum probe_side torus_side(const struct probe_shape *s, const real o[3], 
 			edge = true;
 			continue;
 		}
-		real cm = q.ca + q.cb, sm = q.sa + q.sb, n = sqrtl(cm * cm + sm * sm);
+		real cm = q.ca + q.cb, sm = q.sa + q.sb, n = sqrt(cm * cm + sm * sm);
 		cm /= n;
 		sm /= n;
 		real fm = circle_dist2(s, w0, d, cm, sm);
