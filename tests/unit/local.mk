@@ -43,3 +43,7 @@ check_PROGRAMS += tests/unit/test_crash
 TESTS += tests/unit/test_crash
 tests_unit_test_crash_SOURCES = tests/unit/test_crash.c
 tests_unit_test_crash_LDADD = $(SCN_LIBS)
+check_PROGRAMS += tests/unit/test_torus
+TESTS += tests/unit/test_torus
+tests_unit_test_torus_SOURCES = tests/unit/test_torus.c tests/unit/torus_ref.h
+tests_unit_test_torus_LDADD = $(SCN_LIBS)
