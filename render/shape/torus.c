@@ -304,7 +304,7 @@ static int compress(int n, double *e)
 	return top;
 }
 
-/* h = e + b (Shewchuk's grow_expansion_zeroelim); returns h's length */
+/* h = e + b (Shewchuk's grow_expansion_zeroelim; h may be e); returns h's length */
 static int grow(int n, const double *e, double b, double *h)
 {
 	double q = b;
@@ -323,12 +323,8 @@ static int grow(int n, const double *e, double b, double *h)
 /* e += f, compressed (in place, e has room for EXP_MAX); returns e's length */
 static int add(int n, double *e, int m, const double *f)
 {
-	double tmp[EXP_MAX];
-	for (int j = 0; j < m; j++) {
-		n = grow(n, e, f[j], tmp);
-		for (int i = 0; i < n; i++)
-			e[i] = tmp[i];
-	}
+	for (int j = 0; j < m; j++)
+		n = grow(n, e, f[j], e);
 	return compress(n, e);
 }
 
