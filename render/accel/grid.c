@@ -22,7 +22,8 @@ enum {
 };
 
 #define MULTI_CELL (1u << 31) /* on a reference: the primitive is listed in several cells
-                               * (free: the ids an accelerator holds leave bit 31 clear) */
+                               * (free: a reference is the primitive's number in
+                               * shape_nth(), below shape_count() < 2^31) */
 
 struct grid {
 	double lo[3], hi[3];
@@ -30,7 +31,7 @@ struct grid {
 	double edge_err[3];  /* bound on the distance between lo + i width and where cell_of steps to i */
 	int n[3];
 	uint32_t *start;     /* cell c lists refs[start[c], start[c + 1]) */
-	uint32_t *refs;      /* primitive ids, with MULTI_CELL */
+	uint32_t *refs;      /* primitives by their number in shape_nth(), with MULTI_CELL */
 	size_t nrefs;
 };
 
@@ -157,7 +158,8 @@ struct grid *grid_build(const struct geometry *geo)
 	for (size_t i = n; i-- > 0;) {
 		cell_range(g, &boxes[i], first, last);
 		bool multi = first[0] != last[0] || first[1] != last[1] || first[2] != last[2];
-		uint32_t ref = shape_nth(geo, i) | (multi ? MULTI_CELL : 0);
+		/* the number, not the id: a solid's id has bit 31 set */
+		uint32_t ref = (uint32_t)i | (multi ? MULTI_CELL : 0);
 		for (c[2] = first[2]; c[2] <= last[2]; c[2]++)
 			for (c[1] = first[1]; c[1] <= last[1]; c[1]++)
 				for (c[0] = first[0]; c[0] <= last[0]; c[0]++)
@@ -325,7 +327,7 @@ bool grid_intersect(const struct grid *g, const struct geometry *geo, const stru
 	while ((n = walk_next(g, &w, h->t, cells)) > 0)
 		for (int i = 0; i < n; i++)
 			for (uint32_t j = g->start[cells[i]]; j < g->start[cells[i] + 1]; j++)
-				hit |= shape_intersect(geo, g->refs[j] & ~MULTI_CELL, r, &tr, h);
+				hit |= shape_intersect(geo, shape_nth(geo, g->refs[j] & ~MULTI_CELL), r, &tr, h);
 	return hit;
 }
 
@@ -387,7 +389,7 @@ static bool filter_walk(const struct grid *g, const struct geometry *geo, const 
 					if (!fresh)
 						continue;
 				}
-				*pass = shape_filter(geo, ref & ~MULTI_CELL, r, tr, tmax, *pass);
+				*pass = shape_filter(geo, shape_nth(geo, ref & ~MULTI_CELL), r, tr, tmax, *pass);
 				if (vzero(*pass))
 					return true;
 			}

@@ -12,8 +12,7 @@
 
 /* Shape ids: spheres, triangles, planes and solids (geometry.solids, or for an unbounded
  * one geometry.unbounded with SHAPE_UNBOUNDED set) share one number space, the kind in the
- * top bits. The ids the accelerators hold leave bit 31 clear (the grid marks references
- * with it): planes are the one kind whose ids set it. */
+ * top bits (a solid's and a plane's set bit 31). */
 #define SHAPE_KIND_SHIFT 30
 enum shape_kind { SHAPE_SPHERE = 0, SHAPE_TRIANGLE = 1, SHAPE_SOLID = 2, SHAPE_PLANE = 3 };
 #define SHAPE_UNBOUNDED (1u << 29)
