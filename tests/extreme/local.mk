@@ -1,8 +1,10 @@
 # tests/extreme/local.mk: stiff and extreme scenes (issue 5): world offsets and scales,
 # tiny and far spheres, huge ground spheres, lights on and in objects, grazing light and
 # view, rays along shared mesh edges and BVH slab planes, camera extremes, deep mirrors,
-# total internal reflection, the shadow terminator of a smooth low-poly mesh, and
-# non-finite or degenerate input. Each NAME.scn has the property NAME.expect states (an
+# total internal reflection, the shadow terminator of a smooth low-poly mesh, the stiff
+# cases of section 9's shapes (thin tori face-on and edge-on, far tori, a flattened
+# ellipsoid, a cylinder seen along its axis, flush cutters and coinciding CSG members),
+# and non-finite or degenerate input. Each NAME.scn has the property NAME.expect states (an
 # analytic mask, or equality with a well-conditioned twin), or is refused as NAME.err
 # says; tests/extreme/run-extreme checks it, and every render must count 0 non-finite
 # radiance values. tests/extreme/compare-pov checks the same properties on POV-Ray's
@@ -11,12 +13,20 @@ EXTREME_TESTS = \
 	tests/extreme/axis_rays_neg.scn \
 	tests/extreme/axis_rays_pos.scn \
 	tests/extreme/axis_rays_x.scn \
+	tests/extreme/coincident_intersection.scn \
+	tests/extreme/coincident_merge.scn \
 	tests/extreme/coplanar.scn \
 	tests/extreme/cube_corner.scn \
+	tests/extreme/cylinder_axis.scn \
 	tests/extreme/degenerate.scn \
 	tests/extreme/edge_on.scn \
+	tests/extreme/ellipsoid_1e-3.scn \
+	tests/extreme/ellipsoid_edge_1e-3.scn \
 	tests/extreme/far_sphere_1e6.scn \
 	tests/extreme/far_sphere_3e6.scn \
+	tests/extreme/flush_hole.scn \
+	tests/extreme/flush_pocket.scn \
+	tests/extreme/flush_pocket_moved.scn \
 	tests/extreme/fov_179.9.scn \
 	tests/extreme/fov_1e-6.scn \
 	tests/extreme/glass_cube_tir.scn \
@@ -58,18 +68,32 @@ EXTREME_TESTS = \
 	tests/extreme/terminator.scn \
 	tests/extreme/tiny_radius.scn \
 	tests/extreme/tiny_sphere_2e-6.scn \
-	tests/extreme/tiny_sphere_5e-6.scn
+	tests/extreme/tiny_sphere_5e-6.scn \
+	tests/extreme/torus_edge_1e-3.scn \
+	tests/extreme/torus_edge_1e-4.scn \
+	tests/extreme/torus_face_1e-3.scn \
+	tests/extreme/torus_face_1e-4.scn \
+	tests/extreme/torus_far_1e6.scn \
+	tests/extreme/torus_far_1e9.scn
 TESTS += $(EXTREME_TESTS) tests/extreme/accel-grid.sh
 EXTREME_EXPECT = \
 	tests/extreme/axis_rays_neg.expect \
 	tests/extreme/axis_rays_pos.expect \
 	tests/extreme/axis_rays_x.expect \
+	tests/extreme/coincident_intersection.expect \
+	tests/extreme/coincident_merge.expect \
 	tests/extreme/coplanar.expect \
 	tests/extreme/cube_corner.expect \
+	tests/extreme/cylinder_axis.expect \
 	tests/extreme/degenerate.expect \
 	tests/extreme/edge_on.expect \
+	tests/extreme/ellipsoid_1e-3.expect \
+	tests/extreme/ellipsoid_edge_1e-3.expect \
 	tests/extreme/far_sphere_1e6.expect \
 	tests/extreme/far_sphere_3e6.expect \
+	tests/extreme/flush_hole.expect \
+	tests/extreme/flush_pocket.expect \
+	tests/extreme/flush_pocket_moved.expect \
 	tests/extreme/fov_179.9.expect \
 	tests/extreme/fov_1e-6.expect \
 	tests/extreme/glass_cube_tir.expect \
@@ -106,16 +130,23 @@ EXTREME_EXPECT = \
 	tests/extreme/terminator.expect \
 	tests/extreme/tiny_radius.expect \
 	tests/extreme/tiny_sphere_2e-6.expect \
-	tests/extreme/tiny_sphere_5e-6.expect
+	tests/extreme/tiny_sphere_5e-6.expect \
+	tests/extreme/torus_edge_1e-3.expect \
+	tests/extreme/torus_edge_1e-4.expect \
+	tests/extreme/torus_face_1e-3.expect \
+	tests/extreme/torus_face_1e-4.expect \
+	tests/extreme/torus_far_1e6.expect \
+	tests/extreme/torus_far_1e9.expect
 EXTREME_REFUSED = tests/extreme/huge_mesh.err tests/extreme/huge_sphere.err tests/extreme/literal_1e400.err \
 	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err
 EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
 	tests/extreme/run-extreme tests/extreme/compare-pov tests/extreme/accel-grid.sh \
-	tests/extreme/world.inc tests/extreme/ground.inc tests/extreme/dark.inc tests/extreme/grazing.inc \
+	tests/extreme/world.inc tests/extreme/torus.inc tests/extreme/ground.inc tests/extreme/dark.inc tests/extreme/grazing.inc \
 	tests/extreme/axis_grid.inc tests/extreme/subnormal_dirs.inc \
 	tests/extreme/terminator.inc tests/extreme/icosphere.inc tests/extreme/terminator_twin.scn \
 	tests/extreme/grazing_sphere_twin.scn \
 	tests/extreme/ground_plane.scn \
 	tests/extreme/no_light.scn \
 	tests/extreme/subnormal_dirs_twin.scn \
+	tests/extreme/torus_twin.scn \
 	tests/extreme/world_twin.scn
