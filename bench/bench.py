@@ -108,7 +108,8 @@ def median_run(runs):
 # ---- the scene table ----
 
 def make_scenes(work):
-    """[(name, description, scene path)]: the five scenes of the issue."""
+    """[(name, description, scene path)]: the five scenes of the issue, and the solids of
+    LANGUAGE.md section 9: 10^4 quadrics and tori, and a wall of 1000 CSG bricks."""
     bunny_ply = os.path.join(TOP, "examples", "bunny.ply")
     big_ply = os.path.join(work, "bunny-1m.ply")
     log("bench: writing scenes into", work)
@@ -118,11 +119,15 @@ def make_scenes(work):
     scenes.bunny(os.path.join(work, "bunny.scn"), bunny_ply, os.path.join(TOP, "examples", "bunny.scn"))
     scenes.bunny_subdivided(bunny_ply, big_ply, 900000)
     scenes.bunny(os.path.join(work, "bunny-1m.scn"), big_ply, os.path.join(TOP, "examples", "bunny.scn"))
+    scenes.quadrics(os.path.join(work, "quadrics-1e4.scn"), 10000)
+    scenes.csg_wall(os.path.join(work, "csg-wall.scn"))
     return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
             ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
             ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
             ("bunny", "examples/bunny.ply, 3674 triangles", "bunny.scn"),
-            ("bunny 1M", "bunny, midpoint-subdivided x4: 940544 triangles", "bunny-1m.scn")]
+            ("bunny 1M", "bunny, midpoint-subdivided x4: 940544 triangles", "bunny-1m.scn"),
+            ("quadrics 1e4", "10000 boxes, cylinders, cones, ellipsoids, tori (2000 each), 1 light", "quadrics-1e4.scn"),
+            ("csg wall", "1000 bricks, each a difference of a box and a cylinder, 1 light", "csg-wall.scn")]
 
 
 def scene_settings(path):
@@ -142,9 +147,12 @@ def image_rmse(a, b):
     return float(m.group(1)) if m else float("nan")
 
 
-def scene_table(work, runs, table_scenes):
+def scene_table(work, runs, table_scenes, only=None):
+    """only: the names of the scenes to run (None: every one)."""
     rows = []
     for name, what, file in table_scenes:
+        if only and name not in only:
+            continue
         scene = os.path.join(work, file)
         pov = os.path.join(work, file[:-4] + ".pov")
         subprocess.run([SCN, "pov", scene, "-o", pov], check=True, stderr=subprocess.DEVNULL)
@@ -203,7 +211,7 @@ def print_scene_table(rows, runs):
     print("scenes:")
     for name, what, _, _, _, _, _, cmd in rows:
         print("  %-12s %s" % (name, what))
-    print("POV-Ray's command for the headline: " + " ".join(rows[0][7]))
+    print("POV-Ray's command for %s: " % rows[0][0] + " ".join(rows[0][7]))
 
 
 # ---- the scaling study ----
@@ -324,6 +332,9 @@ def main():
     ap.add_argument("--only", choices=["table", "converge", "scaling", "embree"], action="append",
                     help="run only these parts (repeatable); default: table, scaling and embree, and converge "
                          "with --full")
+    ap.add_argument("--scene", action="append", metavar="NAME",
+                    help="the table's scenes to run, by the name in its first column (repeatable: "
+                         "--scene 'quadrics 1e4' --scene 'csg wall'); default every one")
     ap.add_argument("--work", default=os.environ.get("SCN_BENCH_DIR", "/tmp/scn-bench"),
                     help="where scenes, meshes and images go (default /tmp/scn-bench)")
     ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
@@ -338,7 +349,11 @@ def main():
     if "table" in parts or "embree" in parts:
         table_scenes = make_scenes(a.work)
     if "table" in parts:
-        print_scene_table(scene_table(a.work, runs, table_scenes), runs)
+        if a.scene:
+            unknown = set(a.scene) - {name for name, _, _ in table_scenes}
+            if unknown:
+                sys.exit("bench: no scene %s in the table" % ", ".join(sorted(unknown)))
+        print_scene_table(scene_table(a.work, runs, table_scenes, a.scene), runs)
         print()
         sys.stdout.flush()
     if "converge" in parts:

@@ -68,6 +68,77 @@ def field(path, n, width=640, height=480):
                              loops=sphere_loops(n, ["red", "green", "blue", "sand"], centre, repr(r))))
 
 
+QUADRICS = """// {n} quadrics and tori at random over a floor: boxes, cylinders, cones, ellipsoids
+// (spheres under an uneven scale) and tori, a fifth of each, each turned at random
+camera {{ location <0, 9, -24>  look_at <0, 1, 0>  fov 60  resolution {w}, {h} }}
+light  {{ position <-15, 30, -20> }}
+samples {{ count 5  pattern jittered }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+material floor {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 2) }}
+material red   {{ diffuse <0.8, 0.2, 0.15>  specular 0.3  shininess 40 }}
+material green {{ diffuse <0.2, 0.7, 0.25>  specular 0.3  shininess 40 }}
+material blue  {{ diffuse <0.2, 0.3, 0.8>  specular 0.3  shininess 40 }}
+material sand  {{ diffuse <0.8, 0.7, 0.45> }}
+material grey  {{ diffuse 0.6  specular 0.2  shininess 20 }}
+plane {{ <0, 1, 0>, 0  material floor }}
+let k = {k}
+// each in a box 40 x 8 x 40 above the floor, of half-size s about k, turned at random
+{loops}"""
+
+QUADRIC_SHAPES = [
+    ("red", "box {{ <-s, -s, -s>, <s, s, s>"),
+    ("green", "cylinder {{ <0, -s, 0>, <0, s, 0>, 0.6 * s"),
+    ("blue", "cone {{ <0, -s, 0>, s, <0, s, 0>, 0"),
+    ("sand", "sphere {{ <0, 0, 0>, s  scale <1, 0.4, 0.7>"),
+    ("grey", "torus {{ s, 0.3 * s"),
+]
+
+
+def quadrics(path, n, width=640, height=480):
+    """n mixed solids, n / 5 of each kind of QUADRIC_SHAPES, placed with rand(); the
+    size keeps the share of the box they fill as the spheres field's."""
+    box = 40 * 8 * 40
+    s = (0.03 * box / n) ** (1 / 3) * 0.55
+    loops = []
+    for m, (material, head) in enumerate(QUADRIC_SHAPES):
+        count = n // len(QUADRIC_SHAPES) + (1 if m < n % len(QUADRIC_SHAPES) else 0)
+        k = f"(i + {m * (n // len(QUADRIC_SHAPES) + 1)})"
+        loops.append(
+            f"for i in 0 .. {count} {{\n"
+            f"  let s = k * (0.6 + 0.8 * rand(5 * {k} + 3))\n"
+            f"  {head.format()}  rotate <360 * rand(5 * {k} + 4), 360 * rand(7 * {k} + 1), 0>\n"
+            f"    translate <40 * rand(5 * {k}) - 20, 0.5 + 8 * rand(5 * {k} + 1), 40 * rand(5 * {k} + 2) - 12>"
+            f"  material {material} }}\n}}\n")
+    write(path, QUADRICS.format(n=n, w=width, h=height, k=repr(s), loops="".join(loops)))
+
+
+CSG_WALL = """// a wall of {n} bricks, each a box with a cylinder hole through it (a difference)
+camera {{ location <-6, 5, -16>  look_at <4, 5.5, 0>  fov 60  resolution {w}, {h} }}
+light  {{ position <-10, 20, -25> }}
+samples {{ count 5  pattern jittered }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+material floor {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 1) }}
+material brick {{ diffuse <0.7, 0.3, 0.2>  specular 0.1  shininess 20 }}
+material bore  {{ diffuse <0.9, 0.85, 0.7> }}
+plane {{ <0, 1, 0>, 0  material floor }}
+for row in 0 .. {rows} {{
+  for col in 0 .. {cols} {{
+    let x = 0.5 * (row - 2 * floor(row / 2)) + col - {half}
+    difference {{
+      box {{ <x, row * 0.5, 0>, <x + 0.96, row * 0.5 + 0.46, 0.5>
+            material {{ like brick  diffuse <0.7, 0.3, 0.2> * (0.8 + 0.4 * rand(row * {cols} + col)) }} }}
+      cylinder {{ <x + 0.48, row * 0.5 + 0.23, -0.1>, <x + 0.48, row * 0.5 + 0.23, 0.6>, 0.15  material bore }}
+    }}
+  }}
+}}
+"""
+
+
+def csg_wall(path, rows=25, cols=40, width=640, height=480):
+    """rows x cols bricks in a running bond, each a difference of a box and a cylinder."""
+    write(path, CSG_WALL.format(n=rows * cols, rows=rows, cols=cols, half=cols / 2, w=width, h=height))
+
+
 def bunny(path, ply, example):
     """examples/bunny.scn with its mesh file replaced by ply (an absolute path), and 5 samples
     a pixel rather than 4: POV-Ray's +AM1 +R2 traces 5 camera rays, and none traces 4."""
