@@ -11,4 +11,5 @@ EXAMPLES += examples/lights.scn
 EXAMPLES += examples/triangles.scn
 EXAMPLES += examples/sampling.scn
 EXAMPLES += examples/loops.scn
-EXTRA_DIST += examples/sky.png examples/sky.pov
+EXAMPLES += examples/temple.scn
+EXTRA_DIST += examples/sky.png examples/sky.pov examples/temple.png
