@@ -47,3 +47,7 @@ check_PROGRAMS += tests/unit/test_csg
 TESTS += tests/unit/test_csg
 tests_unit_test_csg_SOURCES = tests/unit/test_csg.c
 tests_unit_test_csg_LDADD = $(SCN_LIBS)
+check_PROGRAMS += tests/unit/test_torus
+TESTS += tests/unit/test_torus
+tests_unit_test_torus_SOURCES = tests/unit/test_torus.c tests/unit/torus_ref.h
+tests_unit_test_torus_LDADD = $(SCN_LIBS)
