@@ -169,7 +169,7 @@ int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double
 		double c[4] = { m * m - 4 * c2, 4 * bb * m - 8 * b2, 4 * bb * bb + 2 * m - 4 * a, 4 * bb };
 		double x[4];
 		int nx = quartic_roots(c, 0, w, x);
-		/* sums of the magnitudes of each coefficient's terms: gamma(6) of each bounds its
+		/* sums of the magnitudes of each coefficient's terms: gamma(8) of each bounds its
 		 * rounding (the move's is in pos_err below) */
 		double ab = fabs(o2.x * u.x) + fabs(o2.y * u.y) + fabs(o2.z * u.z);
 		double am = vdot(o2, o2) + 1 + rho * rho;
@@ -182,7 +182,7 @@ int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double
 		for (int i = 0; i < nx && n < 4; i++) {
 			double xi = x[i], ax = fabs(xi), pos_err = rounding_gamma(8) * (base + ax);
 			/* The quartic's own error bound at its root: its residual and rounding
-			 * (the evaluation's gamma(6) and the coefficients' gamma(6) of the
+			 * (the evaluation's gamma(6) and the coefficients' gamma(8), both of the
 			 * magnitudes), and the point's error times |grad F| <= 2 rho (2 + rho)^2
 			 * on the surface, over the slope. Where it is within 16 times the point's
 			 * error alone, as for a fat torus, the root stands; else the quartic has

@@ -13,7 +13,7 @@
  * affine map, so t is the world ray's parameter). A root is reported only when it is
  * positive beyond its own error bound, so that a ray leaving the surface from an origin
  * already offset by the hit point's error bound does not hit it again at t ~ 0. A ray
- * tangent to the tube, within rounding, gives two equal roots or none. */
+ * tangent to the tube within rounding gives a close pair of roots or none. */
 int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double tmax, double t[4]);
 /* The point of the torus nearest p (p is a hit point computed as o + t d), its outward
  * unit normal, and a bound on the absolute error of each coordinate of the returned point

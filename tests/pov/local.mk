@@ -55,6 +55,7 @@ POV_TESTS = \
 	tests/pov/solid_disc.scn \
 	tests/pov/solid_ellipsoid.scn \
 	tests/pov/solid_mirror.scn \
+	tests/pov/solid_torus.scn \
 	tests/pov/specular.scn \
 	tests/pov/tir.scn \
 	tests/pov/transforms.scn \
@@ -62,8 +63,6 @@ POV_TESTS = \
 	tests/pov/transmit_ior1.scn \
 	tests/pov/triangles.scn \
 	tests/pov/whitted.scn
-# solid_torus.scn waits for the torus solver (the torus on main hits nothing yet): list it
-# above when that lands
 TESTS += $(POV_TESTS)
-EXTRA_DIST += $(POV_TESTS) tests/pov/solid_torus.scn tests/pov/run-pov tests/pov/mirrors.inc tests/pov/palette.inc \
+EXTRA_DIST += $(POV_TESTS) tests/pov/run-pov tests/pov/mirrors.inc tests/pov/palette.inc \
 	tests/pov/octa.obj tests/pov/env.exr
