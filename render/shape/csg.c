@@ -21,20 +21,22 @@
  * that rule: a relative margin far above the t of two coinciding surfaces' difference. */
 #define TIE_MARGIN 0x1p-20
 
-/* Whether r may meet the box [lo, hi] at a t in [t0, t1]: slabs in double, a NaN from a
- * zero direction on a slab plane discarded by fmax and fmin. */
-static bool box_meets(struct vec3 lo, struct vec3 hi, const struct ray *r, double t0, double t1)
+/* Whether the ray from o with inverse direction inv may meet the box [lo, hi] at a t in
+ * [t0, t1]: slabs in double. A NaN (a zero direction on a slab plane: 0 * inf) fails the
+ * comparisons, which keep t0 and t1 as they were. */
+static bool box_meets(struct vec3 lo, struct vec3 hi, struct vec3 o, struct vec3 inv, double t0, double t1)
 {
 	for (int k = 0; k < 3; k++) {
-		double inv = 1 / vget(&r->d, k), o = vget(&r->o, k);
-		double a = (vget(&lo, k) - o) * inv, b = (vget(&hi, k) - o) * inv;
+		double ik = vget(&inv, k), ok = vget(&o, k);
+		double a = (vget(&lo, k) - ok) * ik, b = (vget(&hi, k) - ok) * ik;
 		if (a > b) {
 			double s = a;
 			a = b;
 			b = s;
 		}
-		t0 = fmax(t0, a);
-		t1 = fmin(t1, b * (1 + 2 * rounding_gamma(3)));
+		b *= 1 + 2 * rounding_gamma(3);
+		t0 = a > t0 ? a : t0;
+		t1 = b < t1 ? b : t1;
 	}
 	return t0 <= t1;
 }
@@ -155,6 +157,7 @@ static bool counts(const struct geometry *g, const struct part *p, uint32_t k, c
 /* The search of csg_next() in node p: the closest counted surface so far. */
 struct csg_search {
 	const struct ray *r;
+	struct vec3 inv;               /* 1 / r->d, for the members' boxes */
 	double t_after, tmax;
 	struct csg_hit best;
 	double best_err;               /* the best surface's error along its normal */
@@ -167,28 +170,84 @@ static double search_limit(const struct csg_search *s)
 	return s->found ? fmin(s->tmax, s->best.t * (1 + TIE_MARGIN)) : s->tmax;
 }
 
+/* Whether every member of node p but the one at position k is one whose bounds decide
+ * (not hard) and whose bounds, widened by slack, do not hold q: then every inside test
+ * near q gives the node's wanted answer, and a surface at q counts without being computed. */
+static bool alone(const struct geometry *g, const struct part *p, uint32_t k, struct vec3 q, double slack)
+{
+	if (p->hard > (k < p->hard ? 1u : 0u))
+		return false;
+	const uint32_t *m = g->members + p->first;
+	struct vec3 w = v3s(slack);
+	if (p->tree == CSG_NO_TREE) {
+		for (uint32_t j = p->hard; j < p->count; j++)
+			if (j != k && csg_box_holds(vsub(g->parts[m[j]].lo, w), vadd(g->parts[m[j]].hi, w), q))
+				return false;
+		return true;
+	}
+	uint32_t stack[64], sp = 0;
+	stack[sp++] = p->tree;
+	while (sp) {
+		const struct csg_box *b = &g->csg_boxes[stack[--sp]];
+		if (!csg_box_holds(vsub(b->lo, w), vadd(b->hi, w), q))
+			continue;
+		if (!b->count) {
+			stack[sp++] = b->index;
+			stack[sp++] = b->index + 1;
+			continue;
+		}
+		for (uint32_t j = b->index; j < b->index + b->count; j++)
+			if (j != k && csg_box_holds(vsub(g->parts[m[j]].lo, w), vadd(g->parts[m[j]].hi, w), q))
+				return false;
+	}
+	return true;
+}
+
+/* A surface's error along its normal, the measure of the tie rule. */
+static double normal_error(const struct surface_point *sp)
+{
+	return vdot(vabs(sp->ng), sp->p_err);
+}
+
 /* Looks at the member at position k of node p: its first surface that counts, if any,
- * against the best so far. */
+ * against the best so far. A surface point is computed only where it is needed: for the
+ * inside tests near other members, and for the tie rule when two surfaces count. */
 static void visit_member(const struct geometry *g, const struct part *p, uint32_t k, struct csg_search *s)
 {
 	uint32_t m = g->members[p->first + k];
 	double limit = search_limit(s);
-	if (!box_meets(g->parts[m].lo, g->parts[m].hi, s->r, s->t_after, limit))
+	if (!box_meets(g->parts[m].lo, g->parts[m].hi, s->r->o, s->inv, s->t_after, limit))
 		return;
 	struct csg_hit c;
 	for (double t0 = s->t_after; csg_next(g, m, s->r, t0, limit, &c); t0 = c.t) {
 		struct surface_point sp;
-		csg_surface(g, c.leaf, s->r, c.t, &sp);
-		if (!counts(g, p, k, &sp))
-			continue;
-		double err = vdot(vabs(sp.ng), sp.p_err);
+		/* far above the nudge of counts() and the error of o + t d */
+		struct vec3 q = vmad(s->r->o, c.t, s->r->d);
+		bool computed = !(p->op == PART_ALL || alone(g, p, k, q, 0x1p-20 * (vmaxc(vabs(q)) + c.t)));
+		if (computed) {
+			csg_surface(g, c.leaf, s->r, c.t, &sp);
+			if (!counts(g, p, k, &sp))
+				continue;
+		}
+		if (!s->found) {
+			s->best = c;
+			s->best_err = computed ? normal_error(&sp) : NAN;
+			s->found = true;
+			return;
+		}
+		if (!computed)
+			csg_surface(g, c.leaf, s->r, c.t, &sp);
+		if (isnan(s->best_err)) {
+			struct surface_point best;
+			csg_surface(g, s->best.leaf, s->r, s->best.t, &best);
+			s->best_err = normal_error(&best);
+		}
+		double err = normal_error(&sp);
 		/* one surface when closer along the normal than their error bounds allow */
-		bool same = s->found &&
-		            fabs(s->best.t - c.t) * fabs(vdot(s->r->d, sp.ng)) <= SAME_SURFACE * (err + s->best_err);
-		if (!s->found || (same ? c.leaf < s->best.leaf : c.t < s->best.t)) {
+		bool same = fabs(s->best.t - c.t) * fabs(vdot(s->r->d, sp.ng)) <= SAME_SURFACE * (err + s->best_err);
+		if (same ? c.leaf < s->best.leaf : c.t < s->best.t) {
 			s->best = c;
 			s->best_err = err;
-			s->found = true;
 		}
 		return;
 	}
@@ -215,7 +274,7 @@ bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, doub
 			}
 		return false;
 	}
-	struct csg_search s = { .r = r, .t_after = t_after, .tmax = tmax };
+	struct csg_search s = { .r = r, .inv = v3(1 / r->d.x, 1 / r->d.y, 1 / r->d.z), .t_after = t_after, .tmax = tmax };
 	for (uint32_t k = 0; k < p->hard; k++)
 		visit_member(g, p, k, &s);
 	if (p->tree == CSG_NO_TREE) {
@@ -226,7 +285,7 @@ bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, doub
 		stack[sp++] = p->tree;
 		while (sp) {
 			const struct csg_box *b = &g->csg_boxes[stack[--sp]];
-			if (!box_meets(b->lo, b->hi, r, t_after, search_limit(&s)))
+			if (!box_meets(b->lo, b->hi, r->o, s.inv, t_after, search_limit(&s)))
 				continue;
 			if (!b->count) {
 				stack[sp++] = b->index;

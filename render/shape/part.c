@@ -355,51 +355,68 @@ bool part_inside_leaf(const struct part *p, struct vec3 q)
 	return in != p->inverse;
 }
 
+/* The world bounds of the canonical circle y = c, x^2 + z^2 = rho^2 under p's to_world:
+ * its centre -+ rho times the length of each row's x and z entries, exact (an ellipse's
+ * extent along an axis), widened by the rounding of computing it. */
+static void circle_bounds(const struct part *p, double c, double rho, struct vec3 *lo, struct vec3 *hi)
+{
+	struct vec3 w = affine_point(&p->to_world, v3(0, c, 0)), e;
+	double *ee = &e.x;
+	for (int i = 0; i < 3; i++)
+		ee[i] = rho * hypot(p->to_world.m[i][0], p->to_world.m[i][2]);
+	e = vadd(e, vscale(vadd(vabs(w), e), rounding_gamma(8)));
+	*lo = vmin(*lo, vsub(w, e));
+	*hi = vmax(*hi, vadd(w, e));
+}
+
 void part_leaf_bounds(const struct part *p, struct vec3 *lo, struct vec3 *hi)
 {
-	double b[2][3];
-	switch (p->kind) {
-	case PART_PLANE:
+	if (p->kind == PART_PLANE) {
 		*lo = v3s(-INFINITY);
 		*hi = v3s(INFINITY);
-		return;
-	case PART_BOX:
-		for (int k = 0; k < 3; k++) {
-			b[0][k] = p->a[k];
-			b[1][k] = p->a[3 + k];
-		}
-		break;
-	case PART_TORUS: {
-		double R = p->a[0] + p->a[1];
-		const double t[2][3] = { { -R, -p->a[1], -R }, { R, p->a[1], R } };
-		for (int k = 0; k < 3; k++) {
-			b[0][k] = t[0][k];
-			b[1][k] = t[1][k];
-		}
-		break;
-	}
-	default: {
-		/* sphere, cone, disc: within [-1, 1] but for y, which the cone and disc start at 0 */
-		double y0 = p->kind == PART_SPHERE ? -1 : 0, y1 = p->kind == PART_DISC ? 0 : 1;
-		const double t[2][3] = { { -1, y0, -1 }, { 1, y1, 1 } };
-		for (int k = 0; k < 3; k++) {
-			b[0][k] = t[0][k];
-			b[1][k] = t[1][k];
-		}
-		break;
-	}
-	}
-	if (!p->moved) {
-		*lo = v3a(b[0]);
-		*hi = v3a(b[1]);
 		return;
 	}
 	*lo = v3s(INFINITY);
 	*hi = v3s(-INFINITY);
-	for (int corner = 0; corner < 8; corner++) {
-		struct vec3 c = v3(b[corner & 1][0], b[corner >> 1 & 1][1], b[corner >> 2][2]);
-		struct vec3 w = affine_point(&p->to_world, c), e = affine_error(&p->to_world, c, v3s(0));
-		*lo = vmin(*lo, vsub(w, e));
-		*hi = vmax(*hi, vadd(w, e));
+	const struct affine *m = &p->to_world;
+	switch (p->kind) {
+	case PART_BOX:
+		for (int corner = 0; corner < 8; corner++) {
+			struct vec3 c = v3(p->a[(corner & 1) * 3], p->a[(corner >> 1 & 1) * 3 + 1], p->a[(corner >> 2) * 3 + 2]);
+			struct vec3 w = affine_point(m, c), e = affine_error(m, c, v3s(0));
+			*lo = vmin(*lo, vsub(w, e));
+			*hi = vmax(*hi, vadd(w, e));
+		}
+		return;
+	case PART_SPHERE: case PART_TORUS: {
+		/* the unit ball, or the torus's tube (a ball of the minor radius swept along its
+		 * centre circle): an ellipsoid's extent along an axis is its row's length */
+		double r = p->kind == PART_SPHERE ? 1 : p->a[1];
+		struct vec3 w = affine_point(m, v3s(0)), e;
+		double *ee = &e.x;
+		for (int i = 0; i < 3; i++)
+			ee[i] = r * hypot(hypot(m->m[i][0], m->m[i][1]), m->m[i][2]) * (1 + rounding_gamma(4));
+		if (p->kind == PART_TORUS) {
+			struct vec3 clo = v3s(INFINITY), chi = v3s(-INFINITY);
+			circle_bounds(p, 0, p->a[0], &clo, &chi);
+			*lo = vsub(clo, e);
+			*hi = vadd(chi, e);
+			return;
+		}
+		e = vadd(e, vscale(vadd(vabs(w), e), rounding_gamma(8)));
+		*lo = vsub(w, e);
+		*hi = vadd(w, e);
+		return;
+	}
+	case PART_CONE:
+		/* the hull of its end circles */
+		circle_bounds(p, 0, p->a[0], lo, hi);
+		circle_bounds(p, 1, p->a[1], lo, hi);
+		return;
+	case PART_DISC:
+		circle_bounds(p, 0, 1, lo, hi);
+		return;
+	default:
+		return;
 	}
 }
