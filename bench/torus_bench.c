@@ -1,4 +1,4 @@
-/* torus_bench.c: the cost of torus_roots against sphere_intersect on the same rays, and
+/* torus_bench.c: the cost of torus_roots and torus_first against sphere_intersect on the same rays, and
  * how many rays torus_roots and a closed-form Ferrari solver get wrong on thin and far
  * tori, against the long double reference of tests/unit/torus_ref.h. Built on demand:
  *   make bench/torus_bench && bench/torus_bench [timing rays] [checked rays] */
@@ -184,10 +184,10 @@ static void timing(const char *name, double rho, double dist, size_t n)
 {
 	struct rays r = box_rays(n, rho, dist);
 	struct sphere sph = { v3(0, 0, 0), 1 + rho, 0 };
-	double best[4] = { INFINITY, INFINITY, INFINITY, INFINITY };
-	size_t hits[4] = { 0 };
+	double best[5] = { INFINITY, INFINITY, INFINITY, INFINITY, INFINITY };
+	size_t hits[5] = { 0 };
 	for (int pass = 0; pass < 3; pass++) {
-		for (int m = 0; m < 4; m++) {
+		for (int m = 0; m < 5; m++) {
 			double sum = 0;
 			size_t h = 0;
 			double t0 = clock_now();
@@ -201,8 +201,10 @@ static void timing(const char *name, double rho, double dist, size_t n)
 					t[0] = hit.t;
 				} else if (m == 1) {
 					k = torus_roots(1, rho, r.o[i], r.d[i], INFINITY, t);
+				} else if (m == 2) {
+					k = torus_first(1, rho, r.o[i], r.d[i], 0, INFINITY, t);
 				} else {
-					k = ferrari_torus(1, rho, r.o[i], r.d[i], m == 3, t);
+					k = ferrari_torus(1, rho, r.o[i], r.d[i], m == 4, t);
 				}
 				if (k > 0) {
 					sum += t[0];
@@ -216,8 +218,11 @@ static void timing(const char *name, double rho, double dist, size_t n)
 				best[m] = dt;
 		}
 	}
-	printf("%-22s %8.1f %8.1f %8.1f %8.1f   %5.2f   %5.1f%% %5.1f%%\n", name, best[0] / n * 1e9, best[1] / n * 1e9,
-	       best[2] / n * 1e9, best[3] / n * 1e9, best[1] / best[0], 100.0 * hits[0] / n, 100.0 * hits[1] / n);
+	printf("%-22s %8.1f %8.1f %8.1f %8.1f %8.1f   %5.2f %5.2f   %5.1f%% %5.1f%%\n", name, best[0] / n * 1e9,
+	       best[1] / n * 1e9, best[2] / n * 1e9, best[3] / n * 1e9, best[4] / n * 1e9, best[1] / best[0],
+	       best[2] / best[0], 100.0 * hits[0] / n, 100.0 * hits[1] / n);
+	if (hits[2] != hits[1])
+		printf("  torus_first hit %zu rays, torus_roots %zu\n", hits[2], hits[1]);
 	free_rays(&r);
 }
 
@@ -257,10 +262,11 @@ int main(int argc, char **argv)
 	size_t nc = argc > 2 ? strtoul(argv[2], NULL, 10) : 100000;
 	rng_seed(12345);
 	printf("ns per ray test, rays from random directions aimed at the torus's bounding box; the\n"
-	       "sphere is the torus's bounding sphere; %zu rays; Ferrari: formed at the origin / at\n"
-	       "the ray's point nearest the centre\n", nt);
-	printf("%-22s %8s %8s %8s %8s   %5s   %6s %6s\n", "case", "sphere", "torus", "ferrari", "ferr.mv", "t/s",
-	       "sph.hit", "tor.hit");
+	       "sphere is the torus's bounding sphere; %zu rays; torus: torus_roots (all roots),\n"
+	       "first: torus_first (the first root, as a camera ray needs); Ferrari: formed at the\n"
+	       "origin / at the ray's point nearest the centre\n", nt);
+	printf("%-22s %8s %8s %8s %8s %8s   %5s %5s   %6s %6s\n", "case", "sphere", "torus", "first", "ferrari",
+	       "ferr.mv", "t/s", "f/s", "sph.hit", "tor.hit");
 	static const double rhos[] = { 0.5, 1e-2, 1e-3, 1e-4 };
 	for (int far = 0; far < 2; far++)
 		for (int i = 0; i < 4; i++) {

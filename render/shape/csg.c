@@ -265,14 +265,11 @@ bool csg_next(const struct geometry *g, uint32_t part, const struct ray *r, doub
 		return true;
 	}
 	if (p->kind != PART_CSG) {
-		double t[4];
-		int n = part_crossings(p, r, tmax, t);
-		for (int i = 0; i < n; i++)
-			if (t[i] > t_after) {
-				*out = (struct csg_hit){ t[i], part };
-				return true;
-			}
-		return false;
+		double t;
+		if (!part_next(p, r, t_after, tmax, &t))
+			return false;
+		*out = (struct csg_hit){ t, part };
+		return true;
 	}
 	struct csg_search s = { .r = r, .inv = v3(1 / r->d.x, 1 / r->d.y, 1 / r->d.z), .t_after = t_after, .tmax = tmax };
 	for (uint32_t k = 0; k < p->hard; k++)

@@ -215,6 +215,23 @@ int part_crossings(const struct part *p, const struct ray *r, double tmax, doubl
 	}
 }
 
+bool part_next(const struct part *p, const struct ray *r, double t_after, double tmax, double *t)
+{
+	if (p->kind == PART_TORUS) {
+		struct vec3 o, d;
+		to_canonical(p, r, &o, &d);
+		return torus_first(p->a[0], p->a[1], o, d, t_after, tmax, t);
+	}
+	double c[4];
+	int n = part_crossings(p, r, tmax, c);
+	for (int i = 0; i < n; i++)
+		if (c[i] > t_after) {
+			*t = c[i];
+			return true;
+		}
+	return false;
+}
+
 /* The error of o + t d, coordinate by coordinate. */
 static struct vec3 along_error(struct vec3 o, struct vec3 d, double t)
 {

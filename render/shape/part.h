@@ -60,6 +60,9 @@ struct part {
  * A ray that starts on the surface (its origin offset by ray_offset_origin()) does not
  * cross it again at t ~ 0. */
 int part_crossings(const struct part *p, const struct ray *r, double tmax, double t[4]);
+/* The first of part_crossings()'s t beyond t_after (the same t), in *t; false when there is
+ * none. A torus's later roots are not solved for. */
+bool part_next(const struct part *p, const struct ray *r, double t_after, double tmax, double *t);
 /* The surface of leaf p where r crosses it at t: the point computed from the shape, its
  * error bound, the outward normal (turned inward for an inverse leaf); shading normal
  * the same. */

@@ -173,48 +173,64 @@ static int piece_roots(const double c[4], double s, double a, double b, double h
 	return 0;               /* convex and negative at both ends */
 }
 
-int quartic_roots(const double c[4], double lo, double hi, double x[4])
+void quartic_start(struct quartic_scan *q, const double c[4], double lo, double hi)
 {
 	/* the piece ends: lo, the inflection points inside (lo, hi), hi */
-	double e[4];
 	int ne = 0;
-	e[ne++] = lo;
-	double s = 1;           /* +1 where p is convex, -1 where concave */
+	q->e[ne++] = lo;
+	q->s = 1;               /* +1 where p is convex, -1 where concave */
 	double disc = 9 * c[3] * c[3] - 24 * c[2]; /* of p''/2 = 6 x^2 + 3 c3 x + c2 */
 	if (disc > 0) {
-		double q = -0.5 * (3 * c[3] + copysign(sqrt(disc), c[3]));
-		double k0 = q * (1.0 / 6), k1 = c[2] / q;
+		double r = -0.5 * (3 * c[3] + copysign(sqrt(disc), c[3]));
+		double k0 = r * (1.0 / 6), k1 = c[2] / r;
 		if (k0 > k1) {
 			double tmp = k0;
 			k0 = k1;
 			k1 = tmp;
 		}
 		if (lo >= k0 && lo < k1)
-			s = -1;
+			q->s = -1;
 		if (k0 > lo && k0 < hi)
-			e[ne++] = k0;
+			q->e[ne++] = k0;
 		if (k1 > lo && k1 < hi)
-			e[ne++] = k1;
+			q->e[ne++] = k1;
 	}
-	e[ne++] = hi;
+	q->e[ne++] = hi;
+	q->ne = ne;
+	q->i = 0;
+	q->last = -INFINITY;
+	double pa;
+	eval(c, lo, &q->p, &q->dp, &pa);
+}
 
-	double p[4], dp[4], pa;
-	for (int i = 0; i < ne; i++)
-		eval(c, e[i], &p[i], &dp[i], &pa);
-	double r[12];
-	int n = 0;
-	if (p[0] == 0)
-		r[n++] = lo;
-	for (int i = 0; i + 1 < ne; i++, s = -s) {
-		n += piece_roots(c, s, e[i], e[i + 1], s * p[i], s * dp[i], s * p[i + 1], s * dp[i + 1], r + n);
-		if (p[i + 1] == 0 && (n == 0 || r[n - 1] < e[i + 1]))
-			r[n++] = e[i + 1]; /* a root exactly at a piece's end, once */
+int quartic_next(struct quartic_scan *q, const double c[4], double from, double r[4])
+{
+	double a, b, s, p, dp, pa;
+	for (;;) {
+		if (q->i + 1 >= q->ne)
+			return -1;
+		a = q->e[q->i];
+		b = q->e[++q->i];
+		s = q->s;
+		/* p at the piece's far end, evaluated only now: a caller that stops early
+		 * saves it */
+		eval(c, b, &p, &dp, &pa);
+		if (b >= from)
+			break;
+		q->s = -s;      /* the piece lies before from: passed over unsolved */
+		q->p = p;
+		q->dp = dp;
 	}
-	/* a quartic has at most 4 roots; more can only be rounding noise at a tangency,
-	 * and the nearest matter */
-	if (n > 4)
-		n = 4;
-	for (int i = 0; i < n; i++)
-		x[i] = r[i];
+	int n = 0;
+	if (a == q->e[0] && q->p == 0)
+		r[n++] = a;
+	n += piece_roots(c, s, a, b, s * q->p, s * q->dp, s * p, s * dp, r + n);
+	if (p == 0 && (n > 0 ? r[n - 1] : q->last) < b)
+		r[n++] = b;     /* a root exactly at a piece's end, once */
+	if (n > 0)
+		q->last = r[n - 1];
+	q->s = -s;
+	q->p = p;
+	q->dp = dp;
 	return n;
 }

@@ -75,7 +75,11 @@ static double polish(struct vec3 o, struct vec3 u, double rho, double x, double 
 	return x;
 }
 
-int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double tmax, double t[4])
+/* torus_roots() and torus_first(): the roots in (t_after, tmax) that pass the error
+ * bound's test, ascending, at most 4; with first, only the smallest is sought (in t[0]):
+ * the pieces are solved in ray order and the search stops after the first that has one. */
+static int roots(double major, double minor, struct vec3 o, struct vec3 d, double t_after, double tmax, bool first,
+		 double t[4])
 {
 	double len = vlen(d);
 	if (!(len > 0) || !(tmax > 0))
@@ -156,8 +160,16 @@ int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double
 		}
 	}
 
+	/* t_after in x (from o1), less a margin that holds every root a later piece of the
+	 * clip or of the quartic could report before it: a root stays within its piece but
+	 * for the polish, whose steps are each under a quarter of the tube's radius (see
+	 * polish()), and the conversion's rounding */
+	double x_after = t_after / to_t - sm;
+	x_after -= rho + rounding_gamma(8) * (fabs(x_after) + fabs(sm) + 1);
 	int n = 0;
 	for (int k = 0; k < np; k++) {
+		if (phi[k] < x_after)
+			continue;
 		/* the quartic in x on o2 + x u, x in [0, w]: (|P|^2 + 1 - rho^2)^2 - 4 (P.x^2 +
 		 * P.z^2), the torus's implicit function, negative inside */
 		double start = plo[k], w = phi[k] - start;
@@ -167,8 +179,6 @@ int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double
 		double b2 = o2.x * u.x + o2.z * u.z;
 		double c2 = o2.x * o2.x + o2.z * o2.z;
 		double c[4] = { m * m - 4 * c2, 4 * bb * m - 8 * b2, 4 * bb * bb + 2 * m - 4 * a, 4 * bb };
-		double x[4];
-		int nx = quartic_roots(c, 0, w, x);
 		/* sums of the magnitudes of each coefficient's terms: gamma(8) of each bounds its
 		 * rounding (the move's is in pos_err below) */
 		double ab = fabs(o2.x * u.x) + fabs(o2.y * u.y) + fabs(o2.z * u.z);
@@ -179,30 +189,43 @@ int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double
 		 * direction over the distance travelled */
 		double base = fabs(on.x) + fabs(on.y) + fabs(on.z) + fabs(sm) + fabs(start) + 2;
 		double grad = 2 * rho * (2 + rho) * (2 + rho) * (1 + 0x1p-3);
-		for (int i = 0; i < nx && n < 4; i++) {
-			double xi = x[i], ax = fabs(xi), pos_err = rounding_gamma(8) * (base + ax);
-			/* The quartic's own error bound at its root: its residual and rounding
-			 * (the evaluation's gamma(6) and the coefficients' gamma(8), both of the
-			 * magnitudes), and the point's error times |grad F| <= 2 rho (2 + rho)^2
-			 * on the surface, over the slope. Where it is within 16 times the point's
-			 * error alone, as for a fat torus, the root stands; else the quartic has
-			 * cancelled (a thin torus) and the root is polished on the tube's
-			 * distance. */
-			double dp, dm;
-			double p = quartic_eval(c, xi, &dp), pm = quartic_eval(mag, ax, &dm);
-			double noise = fabs(p) + rounding_gamma(16) * pm, err, xr = xi;
-			if (noise <= 16 * grad * pos_err)
-				err = 2 * (noise + grad * pos_err) / fabs(dp);
-			else
-				xr = polish(o2, u, rho, xi, pos_err, &err);
-			double s = sm + start + xr;
-			double tt = s * to_t;
-			double terr = (err + rounding_gamma(3) * (fabs(sm) + fabs(start) + fabs(xr))) * to_t +
-				      rounding_gamma(6) * fabs(tt);
-			if (tt > terr && tt < tmax)
-				t[n++] = tt;
+		struct quartic_scan scan;
+		quartic_start(&scan, c, 0, w);
+		double x[4], best = INFINITY;
+		for (int nx; (nx = quartic_next(&scan, c, x_after - start, x)) >= 0;) {
+			for (int i = 0; i < nx && n < 4; i++) {
+				double xi = x[i], ax = fabs(xi), pos_err = rounding_gamma(8) * (base + ax);
+				/* The quartic's own error bound at its root: its residual and
+				 * rounding (the evaluation's gamma(6) and the coefficients'
+				 * gamma(8), both of the magnitudes), and the point's error times
+				 * |grad F| <= 2 rho (2 + rho)^2 on the surface, over the slope.
+				 * Where it is within 16 times the point's error alone, as for a
+				 * fat torus, the root stands; else the quartic has cancelled (a
+				 * thin torus) and the root is polished on the tube's distance. */
+				double dp, dm;
+				double p = quartic_eval(c, xi, &dp), pm = quartic_eval(mag, ax, &dm);
+				double noise = fabs(p) + rounding_gamma(16) * pm, err, xr = xi;
+				if (noise <= 16 * grad * pos_err)
+					err = 2 * (noise + grad * pos_err) / fabs(dp);
+				else
+					xr = polish(o2, u, rho, xi, pos_err, &err);
+				double s = sm + start + xr;
+				double tt = s * to_t;
+				double terr = (err + rounding_gamma(3) * (fabs(sm) + fabs(start) + fabs(xr))) * to_t +
+					      rounding_gamma(6) * fabs(tt);
+				if (tt > terr && tt > t_after && tt < tmax) {
+					t[n++] = tt;
+					best = min2(best, xr);
+				}
+			}
+			/* A later piece's roots (of the quartic or of the clip) lie beyond this
+			 * one's end, and the polish moves one below the best only for a
+			 * tangent pair astride it: then the search goes on. */
+			if (first && n > 0 && best < scan.e[scan.i])
+				goto sort;
 		}
 	}
+sort:
 	/* ascending: the polish can swap a pair of roots of a tangent ray */
 	for (int i = 1; i < n; i++)
 		for (int j = i; j > 0 && t[j] < t[j - 1]; j--) {
@@ -211,6 +234,20 @@ int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double
 			t[j - 1] = tmp;
 		}
 	return n;
+}
+
+int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double tmax, double t[4])
+{
+	return roots(major, minor, o, d, 0, tmax, false, t);
+}
+
+bool torus_first(double major, double minor, struct vec3 o, struct vec3 d, double t_after, double tmax, double *t)
+{
+	double r[4];
+	if (!roots(major, minor, o, d, max2(t_after, 0), tmax, true, r))
+		return false;
+	*t = r[0];
+	return true;
 }
 
 void torus_surface(double major, double minor, struct vec3 p, struct vec3 *on, struct vec3 *p_err,

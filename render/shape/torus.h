@@ -15,6 +15,10 @@
  * already offset by the hit point's error bound does not hit it again at t ~ 0. A ray
  * tangent to the tube within rounding gives a close pair of roots or none. */
 int torus_roots(double major, double minor, struct vec3 o, struct vec3 d, double tmax, double t[4]);
+/* The smallest t in (t_after, tmax) of torus_roots()'s (the same roots, by the same
+ * rule), in *t; false when there is none. Cheaper: the ray's pieces are solved in order
+ * and the search stops at the first that has one, skipping those wholly before t_after. */
+bool torus_first(double major, double minor, struct vec3 o, struct vec3 d, double t_after, double tmax, double *t);
 /* The point of the torus nearest p (p is a hit point computed as o + t d), its outward
  * unit normal, and a bound on the absolute error of each coordinate of the returned point
  * (pbrt's pError, as sphere_surface's). */

@@ -3,6 +3,7 @@
  *    equatorial plane, for minor/major 0.5 to 1e-4, at the origin and moved 1e6 away (the
  *    ray mapped into object space as a caller would), rays from 1e6 away, and camera
  *    grids over thin tori's silhouettes, face-on and edge-on, near and from 1e6;
+ *  - torus_first: the first of torus_roots's roots beyond t_after, on the same rays;
  *  - torus_inside: the exact sign, also on points exactly on the surface;
  *  - torus_surface: the point on the torus within its error bound, the normal unit and
  *    outward;
@@ -32,6 +33,32 @@ struct stats {
 	int rays, open, hits, bad;
 };
 
+/* Whether torus_first() fails to give, bit for bit, the first of torus_roots()'s n roots t
+ * beyond t_after, for t_after 0, each root (as CSG steps from surface to surface), just
+ * below each, and between two. */
+static bool first_wrong(double major, double minor, struct vec3 o, struct vec3 d, double tmax, int n,
+			const double t[4])
+{
+	double after[13];
+	int na = 0;
+	after[na++] = 0;
+	for (int i = 0; i < n; i++) {
+		after[na++] = t[i];
+		after[na++] = nextafter(t[i], 0);
+		after[na++] = i > 0 ? 0.5 * (t[i - 1] + t[i]) : 0.5 * t[i];
+	}
+	for (int k = 0; k < na; k++) {
+		int j = 0;
+		while (j < n && !(t[j] > after[k]))
+			j++;
+		double f = NAN;
+		bool got = torus_first(major, minor, o, d, after[k], tmax, &f);
+		if (got != (j < n) || (got && f != t[j]))
+			return true;
+	}
+	return false;
+}
+
 /* One ray against the torus, compared with the reference; returns the count of roots
  * and puts them in t. */
 static int check_ray(double major, double minor, struct vec3 o, struct vec3 d, double tmax, double t[4],
@@ -47,6 +74,7 @@ static int check_ray(double major, double minor, struct vec3 o, struct vec3 d, d
 		bad |= !(t[i] <= t[i + 1]) * 8;
 	for (int i = 0; i < n; i++)
 		bad |= !(t[i] > 0 && t[i] < tmax) * 8;
+	bad |= first_wrong(major, minor, o, d, tmax, n, t) * 16;
 	if (bad) {
 		st->bad++;
 		if (st->bad <= 5) {
