@@ -94,6 +94,10 @@ static int roots(double major, double minor, struct vec3 o, struct vec3 d, doubl
 	 * torus's size if the ray meets its bounding sphere: from there on no value is large,
 	 * however far the ray came from. The move's rounding, a few ulps of |on|, shifts the
 	 * line: a far ray's inherent uncertainty. */
+	/* the reciprocals the clip needs, here: their divisions overlap the work below
+	 * instead of waiting at its end (an infinity, for u.y or a 0, is not used) */
+	double a = u.x * u.x + u.z * u.z;
+	double iy = 1 / u.y, ia = 1 / a;
 	double sm = -vdot(on, u);
 	struct vec3 o1 = vmad(on, sm, u);
 	double big = 1 + rho;
@@ -108,7 +112,6 @@ static int roots(double major, double minor, struct vec3 o, struct vec3 d, doubl
 		if (fabs(o1.y) > slab)
 			return 0;
 	} else {
-		double iy = 1 / u.y;
 		double y0 = (-slab - o1.y) * iy, y1 = (slab - o1.y) * iy;
 		lo = max2(lo, min2(y0, y1));
 		hi = min2(hi, max2(y0, y1));
@@ -116,7 +119,6 @@ static int roots(double major, double minor, struct vec3 o, struct vec3 d, doubl
 			return 0;
 	}
 	/* the cylinders of radius 1 + rho (outer) and 1 - rho (the hole), stood off */
-	double a = u.x * u.x + u.z * u.z;
 	double b = o1.x * u.x + o1.z * u.z;
 	double h = o1.x * u.z - o1.z * u.x;
 	double kout = 1 + slab, kin = 1 - slab;
@@ -138,7 +140,7 @@ static int roots(double major, double minor, struct vec3 o, struct vec3 d, doubl
 		plo[np] = lo;
 		phi[np++] = hi;
 	} else {
-		double ia = 1 / a, x0, x1;
+		double x0, x1;
 		if (!cylinder(a, ia, b, h, kout, &x0, &x1))
 			return 0;
 		lo = max2(lo, x0);
