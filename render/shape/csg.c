@@ -97,38 +97,59 @@ static bool mesh_inside(const struct geometry *g, const struct part *p, struct v
 	return in != p->inverse;
 }
 
-/* Whether every member of node p but the one at position skip answers `wanted` to the
- * inside test at q: the hard members always asked, the others only where their bounds
- * hold q (outside, their answer is `wanted`: csg_tree.h), through the hierarchy when the
- * node has one. */
-static bool members_all(const struct geometry *g, const struct part *p, uint32_t skip, struct vec3 q, bool wanted)
+/* Whether member m's bounds, widened by w, hold q. */
+static bool member_near(const struct geometry *g, uint32_t m, struct vec3 w, struct vec3 q)
+{
+	return csg_box_holds(vsub(g->parts[m].lo, w), vadd(g->parts[m].hi, w), q);
+}
+
+/* Whether each member at positions [from, to) of node p, but the one at skip, whose bounds
+ * widened by w hold q, passes: with test, when its inside test at q answers wanted;
+ * without, never. */
+static bool range_pass(const struct geometry *g, const struct part *p, uint32_t from, uint32_t to, uint32_t skip,
+                       struct vec3 w, struct vec3 q, bool test, bool wanted)
 {
 	const uint32_t *m = g->members + p->first;
-	for (uint32_t j = 0; j < p->hard; j++)
-		if (j != skip && (!csg_box_holds(g->parts[m[j]].lo, g->parts[m[j]].hi, q) || csg_inside(g, m[j], q) != wanted))
+	for (uint32_t j = from; j < to; j++)
+		if (j != skip && member_near(g, m[j], w, q) && (!test || csg_inside(g, m[j], q) != wanted))
 			return false;
-	if (p->tree == CSG_NO_TREE) {
-		for (uint32_t j = p->hard; j < p->count; j++)
-			if (j != skip && csg_box_holds(g->parts[m[j]].lo, g->parts[m[j]].hi, q) && csg_inside(g, m[j], q) != wanted)
-				return false;
-		return true;
-	}
+	return true;
+}
+
+/* range_pass() over node p's members after the hard ones, through the hierarchy when the
+ * node has one: then for only the leaves whose boxes, widened by slack, hold q. */
+static bool soft_members_pass(const struct geometry *g, const struct part *p, uint32_t skip, struct vec3 q,
+                              double slack, bool test, bool wanted)
+{
+	struct vec3 w = v3s(slack);
+	if (p->tree == CSG_NO_TREE)
+		return range_pass(g, p, p->hard, p->count, skip, w, q, test, wanted);
 	uint32_t stack[64], sp = 0;
 	stack[sp++] = p->tree;
 	while (sp) {
 		const struct csg_box *b = &g->csg_boxes[stack[--sp]];
-		if (!csg_box_holds(b->lo, b->hi, q))
+		if (!csg_box_holds(vsub(b->lo, w), vadd(b->hi, w), q))
 			continue;
 		if (!b->count) {
 			stack[sp++] = b->index;
 			stack[sp++] = b->index + 1;
-			continue;
+		} else if (!range_pass(g, p, b->index, b->index + b->count, skip, w, q, test, wanted)) {
+			return false;
 		}
-		for (uint32_t j = b->index; j < b->index + b->count; j++)
-			if (j != skip && csg_box_holds(g->parts[m[j]].lo, g->parts[m[j]].hi, q) && csg_inside(g, m[j], q) != wanted)
-				return false;
 	}
 	return true;
+}
+
+/* Whether every member of node p but the one at position skip answers `wanted` to the
+ * inside test at q: the hard members always asked, the others only where their bounds
+ * hold q (outside, their answer is `wanted`: csg_tree.h). */
+static bool members_all(const struct geometry *g, const struct part *p, uint32_t skip, struct vec3 q, bool wanted)
+{
+	const uint32_t *m = g->members + p->first;
+	for (uint32_t j = 0; j < p->hard; j++)
+		if (j != skip && (!member_near(g, m[j], v3s(0), q) || csg_inside(g, m[j], q) != wanted))
+			return false;
+	return soft_members_pass(g, p, skip, q, 0, true, wanted);
 }
 
 bool csg_inside(const struct geometry *g, uint32_t part, struct vec3 q)
@@ -175,32 +196,7 @@ static double search_limit(const struct csg_search *s)
  * near q gives the node's wanted answer, and a surface at q counts without being computed. */
 static bool alone(const struct geometry *g, const struct part *p, uint32_t k, struct vec3 q, double slack)
 {
-	if (p->hard > (k < p->hard ? 1u : 0u))
-		return false;
-	const uint32_t *m = g->members + p->first;
-	struct vec3 w = v3s(slack);
-	if (p->tree == CSG_NO_TREE) {
-		for (uint32_t j = p->hard; j < p->count; j++)
-			if (j != k && csg_box_holds(vsub(g->parts[m[j]].lo, w), vadd(g->parts[m[j]].hi, w), q))
-				return false;
-		return true;
-	}
-	uint32_t stack[64], sp = 0;
-	stack[sp++] = p->tree;
-	while (sp) {
-		const struct csg_box *b = &g->csg_boxes[stack[--sp]];
-		if (!csg_box_holds(vsub(b->lo, w), vadd(b->hi, w), q))
-			continue;
-		if (!b->count) {
-			stack[sp++] = b->index;
-			stack[sp++] = b->index + 1;
-			continue;
-		}
-		for (uint32_t j = b->index; j < b->index + b->count; j++)
-			if (j != k && csg_box_holds(vsub(g->parts[m[j]].lo, w), vadd(g->parts[m[j]].hi, w), q))
-				return false;
-	}
-	return true;
+	return p->hard <= (k < p->hard ? 1u : 0u) && soft_members_pass(g, p, k, q, slack, false, false);
 }
 
 /* A surface's error along its normal, the measure of the tie rule. */
