@@ -583,14 +583,14 @@ static void lower_object(struct lowering *lw, size_t i)
 		break;
 	}
 	case OBJ_PLANE: {
-		struct vec3 n = vunit(v3a(o->u.plane.normal));
-		struct vec3 on = xform_point(x, vscale(n, o->u.plane.offset)); /* a point of the plane */
-		struct affine inv = xform_inverse(x);
-		struct vec3 wn = vunit(affine_normal(&inv, n));
+		/* the world normal and offset, as a plane part has them */
+		struct part world;
+		struct affine xa = affine_of(x);
+		part_make_plane(&world, v3a(o->u.plane.normal), o->u.plane.offset, &xa);
 		xgrow((void **)&sc->geo.planes, &lw->cap_planes, sc->geo.nplanes + 1, sizeof *sc->geo.planes);
 		struct plane *p = &sc->geo.planes[sc->geo.nplanes++];
-		p->normal = wn;
-		p->offset = vdot(wn, on);
+		p->normal = v3(world.a[0], world.a[1], world.a[2]);
+		p->offset = world.a[3];
 		p->surface = add_surface(lw, o);
 		check_extent(lw, o->span, "this plane", fabs(p->offset));
 		break;
