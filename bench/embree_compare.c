@@ -208,7 +208,7 @@ static int compare(RTCDevice dev, const char *path, bool scaling)
 	struct scene_desc desc;
 	struct scene sc = { 0 };
 	struct lower_times lt;
-	bool ok = load_scene(&d, path, &desc, NULL) == 0 && lower_scene(&d, &desc, &sc, &lt, -1) == 0;
+	bool ok = load_scene(&d, path, NULL, &desc, NULL) == 0 && lower_scene(&d, &desc, &sc, &lt, -1) == 0;
 	diag_flush(&d);
 	diag_fini(&d);
 	if (!ok || sc.geo.ntriangles + sc.geo.nspheres == 0) {

@@ -22,7 +22,7 @@ static const struct fn_info table[BUILTIN_COUNT] = {
 	{ "dot", 2, 2 }, { "cross", 2, 2 }, { "normalize", 1, 1 }, { "length", 1, 1 },
 	{ "rand", 1, 1 },
 	{ "checker", 3, 3 },
-	{ "pi", 0, 0 },
+	{ "pi", 0, 0 }, { "clock", 0, 0 }, { "frame", 0, 0 },
 };
 
 int builtin_lookup(const char *name)
@@ -34,7 +34,7 @@ int builtin_lookup(const char *name)
 }
 
 const char *builtin_name(enum builtin b) { return table[b].name; }
-bool builtin_is_function(enum builtin b) { return b != CONST_PI; }
+bool builtin_is_function(enum builtin b) { return b < CONST_PI; }
 int builtin_min_args(enum builtin b) { return table[b].min_args; }
 int builtin_max_args(enum builtin b) { return table[b].max_args; }
 

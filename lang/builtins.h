@@ -16,7 +16,7 @@ enum builtin {
 	FN_DOT, FN_CROSS, FN_NORMALIZE, FN_LENGTH,  /* vector functions; numbers are promoted */
 	FN_RAND,                                    /* number -> number in [0, 1) */
 	FN_CHECKER,                                 /* checker(C1, C2, SIZE): only as a diffuse colour */
-	CONST_PI,                                   /* not a function */
+	CONST_PI, CONST_CLOCK, CONST_FRAME,         /* constants, not functions */
 	BUILTIN_COUNT
 };
 

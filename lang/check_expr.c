@@ -94,7 +94,7 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 		return b->kind == BIND_LOOP ? TYPE_NUM : b->type;
 	}
 	int fn = builtin_lookup(name);
-	if (fn == CONST_PI) {
+	if (fn >= CONST_PI) {
 		e->u.ident.builtin = fn;
 		return TYPE_NUM;
 	}

@@ -70,7 +70,8 @@ void names_suggest_visible(struct checker *c, struct suggestion *s, bool materia
 			if (e->top && (e->top->kind == BIND_MATERIAL) == materials)
 				suggest_consider(s, e->name);
 	if (!materials)
-		suggest_consider(s, builtin_name(CONST_PI));
+		for (int k = CONST_PI; k < BUILTIN_COUNT; k++)
+			suggest_consider(s, builtin_name(k));
 }
 
 void names_push_scope(struct checker *c)

@@ -122,8 +122,9 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 		}
 		return true;
 	case AST_IDENT:
-		if (e->u.ident.builtin == CONST_PI) {
-			out->v[0] = M_PI;
+		if (e->u.ident.builtin >= CONST_PI) {
+			out->v[0] = e->u.ident.builtin == CONST_PI ? M_PI : e->u.ident.builtin == CONST_CLOCK
+			          ? ev->out->clock : (double)ev->out->frame;
 			return true;
 		}
 		if (ev->bad[e->u.ident.ref->slot]) {

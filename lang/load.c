@@ -103,13 +103,16 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 	return same;
 }
 
-enum load_status load_scene(struct diag *d, const char *path, struct scene_desc *out,
-                                 struct load_times *times)
+enum load_status load_scene(struct diag *d, const char *path, const struct load_frame *at,
+                            struct scene_desc *out, struct load_times *times)
 {
 	struct load_times t = { 0 };
 	double t0 = clock_now();
 	bool from_stdin = strcmp(path, "-") == 0;
+	struct load_frame moment = at ? *at : (struct load_frame){ 0, 0 };
 	scene_desc_init(out);
+	out->clock = moment.clock;
+	out->frame = moment.frame;
 	char *text;
 	uint32_t len;
 	int err = from_stdin ? file_read_stdin(&text, &len) : file_read(path, &text, &len);
@@ -129,6 +132,8 @@ enum load_status load_scene(struct diag *d, const char *path, struct scene_desc 
 		diag_rewind(d, start);
 		scene_desc_free(out);
 		scene_desc_init(out);
+		out->clock = moment.clock;
+		out->frame = moment.frame;
 		load_in_phases(d, src, out, &t);
 	}
 	if (times)

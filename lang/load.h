@@ -12,10 +12,16 @@ struct load_times {
 	double parse, check, eval;     /* seconds; parse includes reading the file */
 };
 
+/* The moment of an animation a scene is evaluated at: the values of clock and frame. */
+struct load_frame {
+	double clock;
+	long frame;
+};
+
 /* Reads the scene at path ("-": standard input), with its includes, and evaluates it into
- * out (always initialised; scene_desc_free it). Diagnostics go to d. The status doubles
- * as the command's exit status. times may be NULL. */
-enum load_status load_scene(struct diag *d, const char *path, struct scene_desc *out,
-                                 struct load_times *times);
+ * out (always initialised; scene_desc_free it) at the moment at (NULL: clock 0, frame 0).
+ * Diagnostics go to d. The status doubles as the command's exit status. times may be NULL. */
+enum load_status load_scene(struct diag *d, const char *path, const struct load_frame *at,
+                            struct scene_desc *out, struct load_times *times);
 
 #endif

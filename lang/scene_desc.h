@@ -136,6 +136,10 @@ struct scene_desc {
 	size_t nxforms, cap_xforms;
 	struct mesh_desc *meshes;
 	size_t nmeshes, cap_meshes;
+	/* the moment of an animation it was evaluated at (LANGUAGE.md 13): what the names
+	 * clock and frame hold; 0 and 0 for a still */
+	double clock;
+	long frame;
 };
 
 /* Fills in LANGUAGE.md's defaults for everything a scene may leave out. */

@@ -30,7 +30,7 @@ int cmd_check(const struct command *self, int argc, char **argv)
 	struct diag d;
 	diag_init(&d, stderr);
 	struct scene_desc desc;
-	enum load_status status = load_scene(&d, scene, &desc, NULL);
+	enum load_status status = load_scene(&d, scene, NULL, &desc, NULL);
 	/* lowering reads the mesh files and sky images, so that check finds malformed ones */
 	struct scene sc = { 0 };
 	struct lower_times times;

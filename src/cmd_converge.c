@@ -746,7 +746,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	struct lower_times wt = { 0 };
 	const char *why_no_pov = NULL;
 	struct image *first[CALIBRATION] = { 0 };  /* the first renders, while the reference is made */
-	rc = (int)load_scene(&d, a.scene, &desc, &lt);
+	rc = (int)load_scene(&d, a.scene, NULL, &desc, &lt);
 	diag_flush(&d);
 	if (rc)
 		goto done;

@@ -40,7 +40,7 @@ int cmd_pov(const struct command *self, int argc, char **argv)
 	struct scene_desc desc;
 	struct scene sc = { 0 };
 	struct lower_times times;
-	int rc = (int)load_scene(&d, scene, &desc, NULL);
+	int rc = (int)load_scene(&d, scene, NULL, &desc, NULL);
 	if (rc == 0)
 		rc = (int)lower_scene(&d, &desc, &sc, &times, -1);
 	diag_flush(&d);

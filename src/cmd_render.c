@@ -230,7 +230,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	struct scene sc = { 0 };
 	struct image *img = NULL;
 	struct render_options ro = { .threads = (int)a.threads };
-	rc = (int)load_scene(&d, a.scene, &desc, &lt);
+	rc = (int)load_scene(&d, a.scene, NULL, &desc, &lt);
 	if (rc == 0)
 		rc = override(self, &a, &desc);
 	if (rc == 0) {

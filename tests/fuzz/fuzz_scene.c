@@ -20,7 +20,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	struct scene_desc desc;
 	struct scene sc = { 0 };
 	struct lower_times times;
-	if (load_scene(&d, path, &desc, NULL) == LOAD_OK)
+	if (load_scene(&d, path, NULL, &desc, NULL) == LOAD_OK)
 		lower_scene(&d, &desc, &sc, &times, -1);  /* as scn check: no memory count */
 	diag_flush(&d);
 	scene_free(&sc);
