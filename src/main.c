@@ -49,13 +49,15 @@ static const struct command commands[] = {
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written, 4 the render failed.\n",
 	  cmd_render },
-	{ "pov", "scn pov SCENE [-o OUT.pov]",
+	{ "pov", "scn pov SCENE [-o OUT.pov] [--clock C]",
 	  "Writes the POV-Ray 3.7 scene that renders the same image as SCENE ('-' reads standard\n"
 	  "input) to OUT.pov, by default the scene's name with .pov ('-o -': standard output).\n"
 	  "Its third line, '// Render: povray ...', is the command that renders it, run in the\n"
 	  "file's folder, into NAME-pov.png (a 16-bit linear PNG; NAME.png is scn render's); the\n"
 	  "comments after it say what POV-Ray cannot match exactly, such as random sample\n"
 	  "patterns. The file is written to a temporary file and renamed into place.\n"
+	  "  --clock C   evaluates the scene with clock C (frame 0): one frame of an animation,\n"
+	  "              which the header names (\"the equivalent of SCENE at clock C\")\n"
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written.\n",
 	  cmd_pov },
