@@ -441,7 +441,7 @@ static void check_def(struct checker *c, struct ast *s)
 	c->csg_loops = 0;
 	c->macro = macro ? s : outer_macro;
 	c->def_depth++;
-	s->u.def.slot_lo = c->nslots;
+	s->u.def.slot_lo = c->nslots; /* the parameters' slots come first: eval_call.c */
 	names_push_scope(c);
 	for (size_t i = 0; i < s->u.def.params.n; i++) {
 		struct ast *p = s->u.def.params.v[i];

@@ -195,7 +195,6 @@ static void iterate(struct evaluator *ev, struct ast *s, const struct value *var
 	struct heap_mark mark = heap_mark(ev);
 	ev->context[ev->ncontext - 1].var = *var;
 	ev->slots[slot] = *var;
-	ev->bad[slot] = false;
 	eval_stmts(ev, &s->u.loop.body);
 	heap_release(ev, mark);
 }
@@ -256,7 +255,8 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 	switch (s->kind) {
 	case AST_LET: {
 		unsigned slot = s->u.let.b->slot;
-		ev->bad[slot] = !eval_expr(ev, s->u.let.value, &ev->slots[slot]);
+		if (!eval_expr(ev, s->u.let.value, &ev->slots[slot]))
+			ev->slots[slot].type = TYPE_NONE;
 		return;
 	}
 	case AST_INCLUDE: /* its bindings last beyond it */
@@ -330,15 +330,12 @@ struct evaluator *eval_new(struct diag *d, struct scene_desc *out)
 	return ev;
 }
 
-/* Makes room for nslots bindings; a new one is not bad until its let says so (a loop
- * variable's and a material's never are). */
+/* Makes room for nslots bindings (each is set before it can be used). */
 static void grow_slots(struct evaluator *ev, size_t nslots)
 {
 	if (nslots <= ev->nslots)
 		return;
 	xgrow((void **)&ev->slots, &ev->cap_slots, nslots, sizeof *ev->slots);
-	xgrow((void **)&ev->bad, &ev->cap_bad, nslots, sizeof *ev->bad);
-	memset(ev->bad + ev->nslots, 0, (nslots - ev->nslots) * sizeof *ev->bad);
 	ev->nslots = nslots;
 }
 
@@ -352,9 +349,7 @@ void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots)
 void eval_free(struct evaluator *ev)
 {
 	free(ev->slots);
-	free(ev->bad);
 	free(ev->saved);
-	free(ev->saved_bad);
 	free(ev->context);
 	arena_free(ev->heap);
 	free(ev);

@@ -19,10 +19,9 @@
 static void save_slots(struct evaluator *ev, unsigned lo, unsigned hi)
 {
 	size_t n = hi - lo;
-	xgrow((void **)&ev->saved, &ev->cap_saved, ev->nsaved + n, sizeof *ev->saved);
-	xgrow((void **)&ev->saved_bad, &ev->cap_saved_bad, ev->nsaved + n, sizeof *ev->saved_bad);
+	if (ev->nsaved + n > ev->cap_saved)
+		xgrow((void **)&ev->saved, &ev->cap_saved, ev->nsaved + n, sizeof *ev->saved);
 	memcpy(ev->saved + ev->nsaved, ev->slots + lo, n * sizeof *ev->saved);
-	memcpy(ev->saved_bad + ev->nsaved, ev->bad + lo, n * sizeof *ev->saved_bad);
 	ev->nsaved += n;
 }
 
@@ -31,7 +30,6 @@ static void restore_slots(struct evaluator *ev, unsigned lo, unsigned hi)
 	size_t n = hi - lo;
 	ev->nsaved -= n;
 	memcpy(ev->slots + lo, ev->saved + ev->nsaved, n * sizeof *ev->saved);
-	memcpy(ev->bad + lo, ev->saved_bad + ev->nsaved, n * sizeof *ev->saved_bad);
 }
 
 bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args, struct call *call)
@@ -46,11 +44,8 @@ bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args
 	call->recursive = def->u.def.active > 0;
 	if (call->recursive)
 		save_slots(ev, def->u.def.slot_lo, def->u.def.slot_hi);
-	for (size_t i = 0; i < def->u.def.params.n; i++) {
-		unsigned slot = def->u.def.params.v[i]->u.ident.ref->slot;
-		ev->slots[slot] = args[i];
-		ev->bad[slot] = false;
-	}
+	/* check.c binds the parameters first, in order, from slot_lo */
+	memcpy(ev->slots + def->u.def.slot_lo, args, def->u.def.params.n * sizeof *args);
 	def->u.def.active++;
 	ev->calls++;
 	context_push(ev, site, NULL);

@@ -14,10 +14,8 @@
 
 /* ---- the heap ---- */
 
-void heap_release(struct evaluator *ev, struct heap_mark m)
+void heap_release_to(struct evaluator *ev, struct heap_mark m)
 {
-	if (ev->elements == m.elements) /* every allocation counts at least one element */
-		return;
 	arena_release(ev->heap, m.arena);
 	ev->elements = m.elements;
 	ev->heap_now = m.arena;
@@ -77,6 +75,24 @@ static bool make_array(struct evaluator *ev, struct ast *e, const struct value *
 	return true;
 }
 
+/* eval_expr, with the leaves (numbers and bindings: most operands) taken here rather
+ * than through its dispatch: the cost of a call of a macro is mostly its arguments'. */
+static inline bool operand(struct evaluator *ev, struct ast *e, struct value *out)
+{
+	if (e->kind == AST_NUM) {
+		ev->steps++;
+		out->type = TYPE_NUM;
+		out->v[0] = e->u.num;
+		return true;
+	}
+	if (e->kind == AST_IDENT && e->u.ident.builtin < 0 && ev->slots[e->u.ident.ref->slot].type != TYPE_NONE) {
+		ev->steps++;
+		*out = ev->slots[e->u.ident.ref->slot];
+		return true;
+	}
+	return eval_expr(ev, e, out);
+}
+
 /* Reports a type rule's message at the operand it blames. */
 static bool type_error(struct evaluator *ev, struct ast *e, enum blame blame, const char *why)
 {
@@ -103,30 +119,36 @@ static bool boolean(struct evaluator *ev, struct ast *e, const struct value *v, 
 	return false;
 }
 
+/* a op b for + - * /; false (reported at e) when the result is not a finite number. */
+static inline bool arithmetic(struct evaluator *ev, struct ast *e, char op, double a, double b, double *out)
+{
+	switch (op) {
+	case '+': *out = a + b; break;
+	case '-': *out = a - b; break;
+	case '*': *out = a * b; break;
+	default:
+		if (b == 0) {
+			eval_error(ev, e, "division by zero");
+			return false;
+		}
+		*out = a / b;
+	}
+	if (isfinite(*out))
+		return true;
+	eval_error(ev, e, "the result is too large to be a number");
+	return false;
+}
+
+/* The same componentwise, for vectors (a number promoted). */
 static bool eval_arithmetic(struct evaluator *ev, struct ast *e, const struct value *l, const struct value *r,
                             struct value *out)
 {
 	double a[3], b[3];
 	broadcast(l, a);
 	broadcast(r, b);
-	int comps = out->type == TYPE_VEC ? 3 : 1;
-	for (int k = 0; k < comps; k++) {
-		switch (e->u.bin.op) {
-		case '+': out->v[k] = a[k] + b[k]; break;
-		case '-': out->v[k] = a[k] - b[k]; break;
-		case '*': out->v[k] = a[k] * b[k]; break;
-		default:
-			if (b[k] == 0) {
-				eval_error(ev, e, "division by zero");
-				return false;
-			}
-			out->v[k] = a[k] / b[k];
-		}
-		if (!isfinite(out->v[k])) {
-			eval_error(ev, e, "the result is too large to be a number");
+	for (int k = 0; k < 3; k++)
+		if (!arithmetic(ev, e, e->u.bin.op, a[k], b[k], &out->v[k]))
 			return false;
-		}
-	}
 	return true;
 }
 
@@ -134,7 +156,7 @@ static bool eval_binary(struct evaluator *ev, struct ast *e, struct value *out)
 {
 	char op = e->u.bin.op;
 	struct value l, r;
-	if (!eval_expr(ev, e->u.bin.l, &l))
+	if (!operand(ev, e->u.bin.l, &l))
 		return false;
 	if (op == OP_AND || op == OP_OR) { /* the right operand only when it decides */
 		if (!boolean(ev, e->u.bin.l, &l, op))
@@ -143,21 +165,24 @@ static bool eval_binary(struct evaluator *ev, struct ast *e, struct value *out)
 			*out = l;
 			return true;
 		}
-		if (!eval_expr(ev, e->u.bin.r, &r) || !boolean(ev, e->u.bin.r, &r, op))
+		if (!operand(ev, e->u.bin.r, &r) || !boolean(ev, e->u.bin.r, &r, op))
 			return false;
 		*out = r;
 		return true;
 	}
-	if (!eval_expr(ev, e->u.bin.r, &r))
+	if (!operand(ev, e->u.bin.r, &r))
 		return false;
-	enum ast_type t = TYPE_NUM; /* of two numbers, the most common case, whatever op */
+	bool arith = op == '+' || op == '-' || op == '*' || op == '/';
+	if (arith && l.type == TYPE_NUM && r.type == TYPE_NUM) { /* the most common case */
+		out->type = TYPE_NUM;
+		return arithmetic(ev, e, op, l.v[0], r.v[0], &out->v[0]);
+	}
+	enum ast_type t = TYPE_BOOL; /* a comparison of two numbers */
 	if (l.type != TYPE_NUM || r.type != TYPE_NUM) {
 		char why[160];
 		enum blame blame;
 		if ((t = type_binary(op, l.type, r.type, why, sizeof why, &blame)) == TYPE_NONE)
 			return type_error(ev, e, blame, why);
-	} else if (op != '+' && op != '-' && op != '*' && op != '/') {
-		t = TYPE_BOOL;
 	}
 	out->type = (uint8_t)t;
 	switch (op) {
@@ -251,7 +276,7 @@ bool call_enter(struct evaluator *ev, struct ast *site, struct call *call)
 	struct value *args = n <= SMALL_ARGS ? small : xmalloc(n * sizeof *args);
 	bool ok = true;
 	for (size_t i = 0; i < n && ok; i++)
-		ok = eval_expr(ev, site->u.call.args.v[i], &args[i]);
+		ok = operand(ev, site->u.call.args.v[i], &args[i]);
 	ok = ok && call_begin(ev, site, args, call);
 	if (args != small)
 		free(args);
@@ -298,7 +323,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 		out->type = TYPE_VEC;
 		for (int k = 0; k < 3; k++) {
 			struct value c;
-			if (!eval_expr(ev, e->u.vec[k], &c))
+			if (!operand(ev, e->u.vec[k], &c))
 				return false;
 			if (c.type != TYPE_NUM) {
 				eval_error(ev, e->u.vec[k], "a vector's components must be numbers, found %s", type_name(c.type));
@@ -327,7 +352,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 			          ? ev->out->clock : (double)ev->out->frame;
 			return true;
 		}
-		if (ev->bad[e->u.ident.ref->slot]) {
+		if (ev->slots[e->u.ident.ref->slot].type == TYPE_NONE) { /* its let failed */
 			ev->failures++;
 			return false;
 		}

@@ -45,9 +45,10 @@ struct heap_mark {
 struct evaluator {
 	struct diag *diag;
 	struct scene_desc *out;
-	struct value *slots;       /* current value of each binding; a material's is its index */
-	bool *bad;                 /* the binding's value could not be computed */
-	size_t nslots, cap_slots, cap_bad;
+	/* current value of each binding (a material's is its index); TYPE_NONE when it could
+	 * not be computed */
+	struct value *slots;
+	size_t nslots, cap_slots;
 	/* the strings and arrays that values point to, released at the end of each statement
 	 * and loop iteration that binds nothing beyond itself; their elements (a string's
 	 * bytes count as elements) against LANG_MAX_ELEMENTS */
@@ -56,8 +57,7 @@ struct evaluator {
 	struct arena_mark heap_now;  /* the heap's state: marked often, changed seldom */
 	/* the values of the running calls' bindings that a call of the same definition hid */
 	struct value *saved;
-	bool *saved_bad;
-	size_t nsaved, cap_saved, cap_saved_bad;
+	size_t nsaved, cap_saved;
 	unsigned calls;            /* calls running, against LANG_MAX_CALL_DEPTH */
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
@@ -102,7 +102,12 @@ static inline struct heap_mark heap_mark(const struct evaluator *ev)
 {
 	return (struct heap_mark){ ev->heap_now, ev->elements };
 }
-void heap_release(struct evaluator *ev, struct heap_mark m);
+void heap_release_to(struct evaluator *ev, struct heap_mark m);
+static inline void heap_release(struct evaluator *ev, struct heap_mark m)
+{
+	if (ev->elements != m.elements) /* every allocation counts at least one element */
+		heap_release_to(ev, m);
+}
 
 /* The value of e; false after an error. */
 bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out);
