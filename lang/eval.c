@@ -346,8 +346,10 @@ void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots)
 		eval_stmt(ev, stmt);
 }
 
-void eval_free(struct evaluator *ev)
+void eval_free(struct evaluator *ev, struct eval_counts *counts)
 {
+	counts->steps += ev->steps;
+	counts->calls += ev->ncalls;
 	free(ev->slots);
 	free(ev->saved);
 	free(ev->context);
@@ -355,10 +357,11 @@ void eval_free(struct evaluator *ev)
 	free(ev);
 }
 
-void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out)
+void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out,
+               struct eval_counts *counts)
 {
 	struct evaluator *ev = eval_new(d, out);
 	grow_slots(ev, nslots);
 	eval_stmts(ev, stmts);
-	eval_free(ev);
+	eval_free(ev, counts);
 }

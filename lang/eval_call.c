@@ -48,6 +48,7 @@ bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args
 	memcpy(ev->slots + def->u.def.slot_lo, args, def->u.def.params.n * sizeof *args);
 	def->u.def.active++;
 	ev->calls++;
+	ev->ncalls++;
 	context_push(ev, site, NULL);
 	return true;
 }

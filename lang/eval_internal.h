@@ -59,6 +59,7 @@ struct evaluator {
 	struct value *saved;
 	size_t nsaved, cap_saved;
 	unsigned calls;            /* calls running, against LANG_MAX_CALL_DEPTH */
+	uint64_t ncalls;           /* calls made */
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
 	/* values that could not be computed, each time (eval_error and the use of a bad
