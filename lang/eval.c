@@ -297,7 +297,8 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 			break;
 		case KW_MATERIAL:
 			ev->slots[s->u.stmt.b->slot] = (struct value){
-				.type = TYPE_NUM, .v = { eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span) } };
+				.type = TYPE_MATERIAL,
+				.v = { eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span) } };
 			break;
 		default:
 			if (kw_is_csg(s->u.stmt.kw))

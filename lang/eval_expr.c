@@ -445,6 +445,15 @@ bool str_of(struct evaluator *ev, struct ast *e, const char **out)
 	return true;
 }
 
+bool material_of(struct evaluator *ev, struct ast *e, int *out)
+{
+	struct value v;
+	if (!value_of(ev, e, 1u << TYPE_MATERIAL, "a material", &v))
+		return false;
+	*out = (int)v.v[0];
+	return true;
+}
+
 bool truth_of(struct evaluator *ev, struct ast *e, bool *out)
 {
 	struct value v;

@@ -113,11 +113,14 @@ static inline void heap_release(struct evaluator *ev, struct heap_mark m)
 /* The value of e; false after an error. */
 bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out);
 /* e as a vector (a number promoted), as a number, as a string, as a boolean, as a whole
- * number in [lo, hi] (what names it in the message); false after an error. */
+ * number in [lo, hi] (what names it in the message); false after an error (a value of
+ * another type can reach them only through what check.c knew as TYPE_ANY). */
 bool vec_of(struct evaluator *ev, struct ast *e, double out[3]);
 bool num_of(struct evaluator *ev, struct ast *e, double *out);
 bool str_of(struct evaluator *ev, struct ast *e, const char **out);
 bool truth_of(struct evaluator *ev, struct ast *e, bool *out);
+/* e as a material: its index in the scene's materials. */
+bool material_of(struct evaluator *ev, struct ast *e, int *out);
 /* A file's name, e's string, and its path from src's folder (both malloc'd); false after
  * an error. A name that check.c could not see (not written as a literal) is checked for
  * reading here, with what the file is for in the message. */

@@ -29,8 +29,9 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 		struct ast *it = block->items.v[i];
 		switch (it->u.item.kw) {
 		case KW_LIKE: {
-			struct ast *id = arg0(it);
-			m = ev->out->materials[(size_t)ev->slots[id->u.ident.ref->slot].v[0]];
+			int like;
+			if (material_of(ev, arg0(it), &like))
+				m = ev->out->materials[like];
 			break;
 		}
 		case KW_DIFFUSE: {
@@ -407,7 +408,7 @@ static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc
 			if (it->u.item.block)
 				obj->material = eval_material(ev, it->u.item.block, NULL, it->span);
 			else
-				obj->material = (int)ev->slots[arg0(it)->u.ident.ref->slot].v[0];
+				ok &= material_of(ev, arg0(it), &obj->material);
 			own_material = true;
 			break;
 		case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:
