@@ -328,6 +328,7 @@ struct evaluator *eval_new(struct diag *d, struct scene_desc *out)
 	ev->out = out;
 	ev->heap = arena_new();
 	ev->heap_now = arena_mark(ev->heap);
+	ev->stack_base = (uintptr_t)__builtin_frame_address(0);
 	return ev;
 }
 

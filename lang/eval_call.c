@@ -9,8 +9,10 @@
  * body between call_begin and call_end. */
 #include "eval_internal.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "check.h"
 #include "xalloc.h"
@@ -32,12 +34,34 @@ static void restore_slots(struct evaluator *ev, unsigned lo, unsigned hi)
 	memcpy(ev->slots + lo, ev->saved + ev->nsaved, n * sizeof *ev->saved);
 }
 
+/* The bytes of stack the evaluation may use: the machine's limit less a margin for what
+ * one body nests between two calls (expressions and blocks, each bounded by
+ * LANG_MAX_NESTING) and for what runs after. */
+static size_t stack_budget(void)
+{
+	const size_t margin = 4u << 20;
+	struct rlimit r;
+	if (getrlimit(RLIMIT_STACK, &r) != 0 || r.rlim_cur == RLIM_INFINITY || r.rlim_cur > (256u << 20))
+		return 256u << 20;
+	return r.rlim_cur > 2 * margin ? (size_t)r.rlim_cur - margin : (size_t)r.rlim_cur / 2;
+}
+
 bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args, struct call *call)
 {
 	struct ast *def = site->u.call.ref->def;
 	if (ev->calls == LANG_MAX_CALL_DEPTH) {
 		eval_error_span(ev, site, site->u.call.name_span, "calls nested more than %d deep (does a recursion end?)",
 		                LANG_MAX_CALL_DEPTH);
+		return false;
+	}
+	/* 256 calls of bodies that nest 1000 deep would outgrow the stack: the depth in
+	 * bytes is checked too */
+	uintptr_t here = (uintptr_t)__builtin_frame_address(0);
+	if (!ev->stack_budget)
+		ev->stack_budget = stack_budget();
+	if (ev->stack_base > here && ev->stack_base - here > ev->stack_budget) {
+		eval_error_span(ev, site, site->u.call.name_span, "calls nested too deep for the stack: each holds "
+		                "deeply nested expressions or blocks");
 		return false;
 	}
 	call->def = def;

@@ -60,6 +60,8 @@ struct evaluator {
 	size_t nsaved, cap_saved;
 	unsigned calls;            /* calls running, against LANG_MAX_CALL_DEPTH */
 	uint64_t ncalls;           /* calls made */
+	uintptr_t stack_base;      /* the stack where the evaluation began, and how far below */
+	size_t stack_budget;       /* it calls may go (eval_call.c) */
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
 	/* values that could not be computed, each time (eval_error and the use of a bad
