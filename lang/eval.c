@@ -31,7 +31,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		case KW_FOV:
 			if (num_of(ev, arg0(it), &c->fov) && !(c->fov > 0 && c->fov < 180))
 				eval_error(ev, arg0(it), "fov must be between 0 and 180 degrees (both excluded), not %s",
-				           num_text(c->fov, nb));
+				           value_number_text(c->fov, nb));
 			break;
 		case KW_RESOLUTION:
 			c->resolution_span = it->span;
@@ -142,7 +142,7 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 		case KW_TARGET_ERROR:
 			target_at = arg0(it);
 			if (num_of(ev, arg0(it), &sd->target_error) && !(sd->target_error > 0))
-				eval_error(ev, arg0(it), "target_error must be positive, not %s", num_text(sd->target_error, nb));
+				eval_error(ev, arg0(it), "target_error must be positive, not %s", value_number_text(sd->target_error, nb));
 			break;
 		}
 	}

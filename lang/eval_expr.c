@@ -1,6 +1,7 @@
 /* eval_expr.c: the evaluator's expressions: every value computed, a non-finite result an
- * error at its place; the values of items as numbers, vectors and whole numbers; and the
- * evaluator's error reports, once per place with the loop values that led there. */
+ * error at its place, a type that check.c could not know checked by value.h's rules;
+ * calls of the scene's functions; the heap that strings and arrays live on; and the
+ * values of items as numbers, vectors, strings, materials and whole numbers. */
 #include "eval_internal.h"
 
 #include <stdarg.h>
@@ -218,11 +219,11 @@ static bool eval_index(struct evaluator *ev, struct ast *e, struct value *out)
 	}
 	double k = i.v[0];
 	if (k != floor(k)) {
-		eval_error(ev, e->u.bin.r, "an index must be a whole number, not %s", num_text(k, nb));
+		eval_error(ev, e->u.bin.r, "an index must be a whole number, not %s", value_number_text(k, nb));
 		return false;
 	}
 	if (k < 0 || k >= a.len) {
-		eval_error(ev, e->u.bin.r, "index %s is out of range: the array has %u element%s%s", num_text(k, nb), a.len,
+		eval_error(ev, e->u.bin.r, "index %s is out of range: the array has %u element%s%s", value_number_text(k, nb), a.len,
 		           a.len == 1 ? "" : "s", a.len ? " (the first is 0)" : "");
 		return false;
 	}
@@ -468,7 +469,7 @@ static const char *bound_text(double x, char buf[32])
 {
 	if (fabs(x) == 9007199254740992.0)
 		return x < 0 ? "-2^53" : "2^53";
-	return num_text(x, buf);
+	return value_number_text(x, buf);
 }
 
 /* A whole number in [lo, hi]; what names it in the message. */
@@ -479,7 +480,7 @@ bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const c
 	if (*out != floor(*out) || *out < lo || *out > hi) {
 		char lo_buf[32], hi_buf[32], nb[32];
 		eval_error(ev, e, "%s must be a whole number from %s to %s, not %s", what, bound_text(lo, lo_buf),
-		           bound_text(hi, hi_buf), num_text(*out, nb));
+		           bound_text(hi, hi_buf), value_number_text(*out, nb));
 		return false;
 	}
 	return true;

@@ -144,8 +144,6 @@ void call_end(struct evaluator *ev, const struct call *call);
 
 /* ---- eval_report.c ---- */
 
-/* A number for a message, in buf. */
-const char *num_text(double x, char buf[32]);
 /* Reports an error at node at (at span sp), once per place however many loop iterations
  * and calls reach it, with notes on the loops' values and the calls that led there. */
 void eval_error(struct evaluator *ev, struct ast *at, const char *fmt, ...)
