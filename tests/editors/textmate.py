@@ -1,10 +1,10 @@
 """textmate.py: for textmate.sh: a small TextMate tokenizer (match and begin/end rules, their
 captures, match rules applied to a capture, includes of the repository and $self) that
 prints, for each line of a file, one letter per character for the class of its innermost
-scope that has one (the letters of sample.codes); with --words, the words that the grammar's keyword rules list, one
-"CLASS WORD" a line. Python's re stands in for Oniguruma: the grammar keeps to what both
-read alike. Exit status 1 with a message when the grammar does not parse or has a rule this
-tokenizer does not know.
+scope that has one (the letters of sample.codes); with --words, the words that the grammar's
+keyword rules list, one "CLASS WORD" a line. Python's re stands in for Oniguruma: the
+grammar keeps to what both read alike. Exit status 1 with a message when the grammar does
+not parse or has a rule this tokenizer does not know.
 
 usage: textmate.py GRAMMAR FILE | textmate.py --words GRAMMAR"""
 import json
