@@ -442,12 +442,12 @@ static void check_def(struct checker *c, struct ast *s)
 		           builtin_is_function(fn) ? "function" : "constant");
 	struct binding *b = names_bind(c, name, s->u.def.name_span, macro ? BIND_MACRO : BIND_FUNCTION, TYPE_NONE);
 	s->u.def.b = b;
+	if (b)
+		b->def = s;
 	if (!room_for_scopes(c, s->u.def.name_span))
 		return;
-	if (b) {
-		b->def = s;
+	if (b)
 		b->checking = true;
-	}
 	struct ast *outer_csg = c->csg, *outer_macro = c->macro;
 	unsigned outer_loops = c->csg_loops;
 	bool outer_failed = c->csg_failed;

@@ -144,6 +144,7 @@ stmt:
 ;
 if_stmt:
 	IF expr '{' stmts '}' else_stmts    { $$ = ast_if(A, @$, $2, $4, $6); }
+|	IF error '{' stmts '}' else_stmts   { $$ = ast_if(A, @$, ast_new(A, AST_ERROR, @2), $4, $6); } /* its body still read */
 ;
 else_stmts:
 	%empty                              { $$ = no_list; }
@@ -210,6 +211,8 @@ member:
 if_member:
 	IF expr '{' members '}' else_members
 	                                    { $$ = ast_if(A, @$, $2, $4, $6); }
+|	IF error '{' members '}' else_members
+	                                    { $$ = ast_if(A, @$, ast_new(A, AST_ERROR, @2), $4, $6); }
 ;
 else_members:
 	%empty                              { $$ = no_list; }
@@ -474,7 +477,7 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 	}
 	const char *name = yysymbol_name(k);
 	if (strlen(name) == 3 && name[0] == '\'') {
-		if (strchr("+-*/.(<[?:", name[1]))
+		if (strchr("+-*/.(<[?", name[1]))
 			return NULL;
 	}
 	return name;

@@ -275,3 +275,5 @@ TESTS += tests/errors/lang_strings.scn
 EXTRA_DIST += tests/errors/lang_strings.scn tests/errors/lang_strings.err
 TESTS += tests/errors/lang_unknown_call.scn
 EXTRA_DIST += tests/errors/lang_unknown_call.scn tests/errors/lang_unknown_call.err
+TESTS += tests/errors/lang_syntax.scn
+EXTRA_DIST += tests/errors/lang_syntax.scn tests/errors/lang_syntax.err
