@@ -166,7 +166,9 @@ static enum ast_type check_call(struct checker *c, struct ast *e)
 		check_user_call(c, e, b);
 		return TYPE_ANY;
 	}
-	int fn = b ? -1 : builtin_lookup(name);
+	/* functions are only ever called: a value or a material may share a built-in
+	 * function's name (LANGUAGE.md's own scene names a material floor) */
+	int fn = builtin_lookup(name);
 	if (fn < 0 || !builtin_is_function(fn)) {
 		if (b && b->kind == BIND_MACRO)
 			diag_error(c->diag, e->u.call.name_span, "'%s' is a macro: call it as a statement; it has no value", name);

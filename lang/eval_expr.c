@@ -231,33 +231,41 @@ static bool eval_index(struct evaluator *ev, struct ast *e, struct value *out)
 	return true;
 }
 
-/* A built-in function's call: the arguments' types checked as check.c checks static
- * ones, for those it knew only as TYPE_ANY. */
+/* The type of a call of a built-in function whose arguments check.c did not all know
+ * (TYPE_ANY): value.h's rules on the values' own types, reported as check.c would. */
+static enum ast_type dynamic_type(struct evaluator *ev, struct ast *e, const struct value *args, size_t n)
+{
+	enum ast_type small[4] = { 0 };
+	enum ast_type *types = n <= 4 ? small : xmalloc(n * sizeof *types);
+	for (size_t i = 0; i < n; i++)
+		types[i] = (enum ast_type)args[i].type;
+	int bad = -1;
+	const char *why = NULL;
+	enum ast_type t = builtin_type(e->u.call.fn, types, (int)n, &bad, &why);
+	if (t == TYPE_NONE)
+		eval_error(ev, e->u.call.args.v[bad], "%s, found %s", why, type_name(types[bad]));
+	if (types != small)
+		free(types);
+	return t;
+}
+
 static bool eval_builtin(struct evaluator *ev, struct ast *e, struct value *out)
 {
 	/* min and max take any number of arguments, millions in a big file: more than a few
 	 * go on the heap, not the stack */
 	size_t n = e->u.call.args.n;
-	struct value small_args[4] = { 0 };
-	enum ast_type small_types[4] = { 0 };
-	struct value *args = n <= 4 ? small_args : xcalloc(n, sizeof *args);
-	enum ast_type *types = n <= 4 ? small_types : xcalloc(n, sizeof *types);
-	bool ok = true;
+	struct value small[4];
+	struct value *args = n <= 4 ? small : xmalloc(n * sizeof *args);
+	bool ok = true, as_checked = e->type != TYPE_ANY; /* every argument of the type check.c saw */
 	for (size_t i = 0; i < n && ok; i++) {
-		ok = eval_expr(ev, e->u.call.args.v[i], &args[i]);
-		types[i] = (enum ast_type)args[i].type;
+		ok = operand(ev, e->u.call.args.v[i], &args[i]);
+		as_checked &= args[i].type == e->u.call.args.v[i]->type;
 	}
-	int bad = -1;
-	const char *why = NULL;
-	enum ast_type t = ok ? builtin_type(e->u.call.fn, types, (int)n, &bad, &why) : TYPE_NONE;
-	if (ok && t == TYPE_NONE)
-		eval_error(ev, e->u.call.args.v[bad], "%s, found %s", why, type_name(types[bad]));
+	enum ast_type t = !ok ? TYPE_NONE : as_checked ? (enum ast_type)e->type : dynamic_type(ev, e, args, n);
 	char text[32];
 	const char *fail = t != TYPE_NONE ? builtin_apply(e->u.call.fn, args, (int)n, t, out, text) : NULL;
-	if (n > 4) {
+	if (args != small)
 		free(args);
-		free(types);
-	}
 	if (fail)
 		eval_error(ev, e, "%s", fail);
 	if (t == TYPE_NONE || fail)
