@@ -117,10 +117,10 @@ camera {{ location <-6, 5, -16>  look_at <4, 5.5, 0>  fov 60  resolution {w}, {h
 light  {{ position <-10, 20, -25> }}
 samples {{ count 5  pattern jittered }}
 skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
-material floor {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 1) }}
+material ground {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 1) }}
 material brick {{ diffuse <0.7, 0.3, 0.2>  specular 0.1  shininess 20 }}
 material bore  {{ diffuse <0.9, 0.85, 0.7> }}
-plane {{ <0, 1, 0>, 0  material floor }}
+plane {{ <0, 1, 0>, 0  material ground }}
 for row in 0 .. {rows} {{
   for col in 0 .. {cols} {{
     let x = 0.5 * (row - 2 * floor(row / 2)) + col - {half}
