@@ -139,6 +139,48 @@ def csg_wall(path, rows=25, cols=40, width=640, height=480):
     write(path, CSG_WALL.format(n=rows * cols, rows=rows, cols=cols, half=cols / 2, w=width, h=height))
 
 
+
+# ---- the language of section 10: macros against the loops that made the same objects before ----
+
+MACRO_SPHERES = """// a binary tree of {n} spheres made by a macro that calls itself twice, one sphere a call:
+// level y holds the spheres x = 0 .. 2^y - 1 at <x, y, 0>
+def tree(x, y, d) {{
+  sphere {{ <x, y, 0>, 0.4 }}
+  if d > 0 {{ tree(2 * x, y + 1, d - 1)  tree(2 * x + 1, y + 1, d - 1) }}
+}}
+tree(0, 0, {depth})
+"""
+
+LOOP_SPHERES = """// the {n} spheres of the macro tree, written with for loops as before macros: level y
+// holds the spheres x = 0 .. 2^y - 1 at <x, y, 0>
+for y in 0 .. {levels} {{
+  for x in 0 .. pow(2, y) {{ sphere {{ <x, y, 0>, 0.4 }} }}
+}}
+"""
+
+
+def sphere_tree(path, depth, macro):
+    """2^(depth + 1) - 1 spheres in levels 0 .. depth, from a recursive macro (one sphere a
+    call) or from nested for loops: the same spheres, in another order."""
+    text = MACRO_SPHERES if macro else LOOP_SPHERES
+    write(path, text.format(n=2 ** (depth + 1) - 1, depth=depth, levels=depth + 1))
+
+
+MACRO_CALLS = """// {n} calls of a macro that makes one sphere, from a for loop
+def ball(i) {{ sphere {{ <mod(i, 100), floor(i / 100), 0>, 0.4 }} }}
+for i in 0 .. {n} {{ ball(i) }}
+"""
+
+INLINE_CALLS = """// the {n} spheres of the macro-call scene with the sphere written in the loop
+for i in 0 .. {n} {{ sphere {{ <mod(i, 100), floor(i / 100), 0>, 0.4 }} }}
+"""
+
+
+def sphere_calls(path, n, macro):
+    """n spheres from a loop, each from a call of a one-sphere macro or written inline."""
+    write(path, (MACRO_CALLS if macro else INLINE_CALLS).format(n=n))
+
+
 def bunny(path, ply, example):
     """examples/bunny.scn with its mesh file replaced by ply (an absolute path), and 5 samples
     a pixel rather than 4: POV-Ray's +AM1 +R2 traces 5 camera rays, and none traces 4."""
