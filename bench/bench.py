@@ -109,8 +109,9 @@ def median_run(runs):
 # ---- the scene table ----
 
 def make_scenes(work):
-    """[(name, description, scene path)]: the five scenes of the issue, and the solids of
-    LANGUAGE.md section 9: 10^4 quadrics and tori, and a wall of 1000 CSG bricks."""
+    """[(name, description, scene path)]: the five scenes of the issue, the solids of
+    LANGUAGE.md section 9 (10^4 quadrics and tori, a wall of 1000 CSG bricks) and the macros
+    of section 10 (a tree of 40958 objects from a macro that calls itself)."""
     bunny_ply = os.path.join(TOP, "examples", "bunny.ply")
     big_ply = os.path.join(work, "bunny-1m.ply")
     log("bench: writing scenes into", work)
@@ -122,13 +123,16 @@ def make_scenes(work):
     scenes.bunny(os.path.join(work, "bunny-1m.scn"), big_ply, os.path.join(TOP, "examples", "bunny.scn"))
     scenes.quadrics(os.path.join(work, "quadrics-1e4.scn"), 10000)
     scenes.csg_wall(os.path.join(work, "csg-wall.scn"))
+    scenes.macro_tree(os.path.join(work, "macro-tree.scn"), 13)
     return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
             ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
             ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
             ("bunny", "examples/bunny.ply, 3674 triangles", "bunny.scn"),
             ("bunny 1M", "bunny, midpoint-subdivided x4: 940544 triangles", "bunny-1m.scn"),
             ("quadrics 1e4", "10000 boxes, cylinders, cones, ellipsoids, tori (2000 each), 1 light", "quadrics-1e4.scn"),
-            ("csg wall", "1000 bricks, each a difference of a box and a cylinder, 1 light", "csg-wall.scn")]
+            ("csg wall", "1000 bricks, each a difference of a box and a cylinder, 1 light", "csg-wall.scn"),
+            ("macro tree", "a macro calling itself twice, turned by rand(): 16383 cylinders, 24575 spheres, "
+             "1 light", "macro-tree.scn")]
 
 
 def scene_settings(path):

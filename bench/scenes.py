@@ -181,6 +181,49 @@ def sphere_calls(path, n, macro):
     write(path, (MACRO_CALLS if macro else INLINE_CALLS).format(n=n))
 
 
+MACRO_TREE = """// a tree of {branches} branches, each a cylinder with a sphere at its joint, and {branches_half}
+// leaves: a macro that calls itself twice a branch, turned and scaled by rand()
+camera {{ location <0, 7.5, -25>  look_at <0, 7, 0>  fov 55  resolution {w}, {h} }}
+light  {{ position <-14, 24, -18> }}
+samples {{ count 5  pattern jittered }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+material ground {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 2) }}
+material bark  {{ diffuse <0.45, 0.3, 0.2>  specular 0.1  shininess 20 }}
+material leaf1 {{ diffuse <0.2, 0.6, 0.15>  specular 0.2  shininess 30 }}
+material leaf2 {{ diffuse <0.5, 0.7, 0.1>  specular 0.2  shininess 30 }}
+material leaf3 {{ diffuse <0.8, 0.45, 0.1>  specular 0.2  shininess 30 }}
+plane {{ <0, 1, 0>, 0  material ground }}
+let leaves = [leaf1, leaf2, leaf3]
+// a unit vector at random, from the key k
+def jitter(k) = normalize(<rand(k) - 0.5, rand(k + 1) - 0.5, rand(k + 2) - 0.5>)
+// a branch from base along dir (a unit vector), and below it two branches turned apart
+// about a random axis across it; k numbers the branches as a heap does (children 2k, 2k + 1)
+def branch(base, dir, len, r, d, k) {{
+  let tip = base + dir * len
+  cylinder {{ base, tip, r  material bark }}
+  sphere {{ tip, r  material bark }}
+  if d > 0 {{
+    let side = normalize(cross(dir, jitter(7 * k)))
+    let spread = 0.55 + 0.5 * rand(7 * k + 3)
+    branch(tip, normalize(dir + spread * side + <0, 0.25, 0>), len * (0.68 + 0.2 * rand(7 * k + 4)), r * 0.72,
+           d - 1, 2 * k)
+    branch(tip, normalize(dir - spread * side + <0, 0.25, 0>), len * (0.68 + 0.2 * rand(7 * k + 5)), r * 0.72,
+           d - 1, 2 * k + 1)
+  }} else {{
+    let colour = leaves[floor(3 * rand(7 * k + 2))]
+    sphere {{ tip, 0.09 + 0.05 * rand(7 * k + 6)  material colour }}
+  }}
+}}
+branch(<0, 0, 0>, <0, 1, 0>, 3, 0.3, {depth}, 1)
+"""
+
+
+def macro_tree(path, depth=13, width=640, height=480):
+    """A recursive tree of 2^(depth + 1) - 1 branches (a cylinder and a sphere each) and
+    2^depth leaves (spheres): 5 * 2^depth - 2 objects, 40958 at depth 13."""
+    branches = 2 ** (depth + 1) - 1
+    write(path, MACRO_TREE.format(branches=branches, branches_half=2 ** depth, depth=depth, w=width, h=height))
+
 def bunny(path, ply, example):
     """examples/bunny.scn with its mesh file replaced by ply (an absolute path), and 5 samples
     a pixel rather than 4: POV-Ray's +AM1 +R2 traces 5 camera rays, and none traces 4."""
