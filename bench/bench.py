@@ -2,8 +2,9 @@
 
 The scene table: scn and POV-Ray 3.7 on the same scenes, runs alternating scn/POV-Ray, the
 median of each; POV-Ray renders the scene `scn pov` writes, with the command line written at
-its top plus +WT2. The scaling study: render time against the number of spheres for each
-accelerator. The Embree table: bench/embree_compare. Scenes and meshes are generated into a
+its top plus +WT2. The language: the load of 10^6 spheres from a recursive macro against the
+same spheres from for loops, and the time of a macro call. The scaling study: render time
+against the number of spheres for each accelerator. The Embree table: bench/embree_compare. Scenes and meshes are generated into a
 work folder (default /tmp/scn-bench), never committed."""
 
 import argparse
@@ -108,8 +109,9 @@ def median_run(runs):
 # ---- the scene table ----
 
 def make_scenes(work):
-    """[(name, description, scene path)]: the five scenes of the issue, and the solids of
-    LANGUAGE.md section 9: 10^4 quadrics and tori, and a wall of 1000 CSG bricks."""
+    """[(name, description, scene path)]: the five scenes of the issue, the solids of
+    LANGUAGE.md section 9 (10^4 quadrics and tori, a wall of 1000 CSG bricks) and the macros
+    of section 10 (a tree of 40958 objects from a macro that calls itself)."""
     bunny_ply = os.path.join(TOP, "examples", "bunny.ply")
     big_ply = os.path.join(work, "bunny-1m.ply")
     log("bench: writing scenes into", work)
@@ -121,13 +123,16 @@ def make_scenes(work):
     scenes.bunny(os.path.join(work, "bunny-1m.scn"), big_ply, os.path.join(TOP, "examples", "bunny.scn"))
     scenes.quadrics(os.path.join(work, "quadrics-1e4.scn"), 10000)
     scenes.csg_wall(os.path.join(work, "csg-wall.scn"))
+    scenes.macro_tree(os.path.join(work, "macro-tree.scn"), 13)
     return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
             ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
             ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
             ("bunny", "examples/bunny.ply, 3674 triangles", "bunny.scn"),
             ("bunny 1M", "bunny, midpoint-subdivided x4: 940544 triangles", "bunny-1m.scn"),
             ("quadrics 1e4", "10000 boxes, cylinders, cones, ellipsoids, tori (2000 each), 1 light", "quadrics-1e4.scn"),
-            ("csg wall", "1000 bricks, each a difference of a box and a cylinder, 1 light", "csg-wall.scn")]
+            ("csg wall", "1000 bricks, each a difference of a box and a cylinder, 1 light", "csg-wall.scn"),
+            ("macro tree", "a macro calling itself twice, turned by rand(): 16383 cylinders, 24575 spheres, "
+             "1 light", "macro-tree.scn")]
 
 
 def scene_settings(path):
@@ -212,6 +217,166 @@ def print_scene_table(rows, runs):
     for name, what, _, _, _, _, _, cmd in rows:
         print("  %-12s %s" % (name, what))
     print("POV-Ray's command for %s: " % rows[0][0] + " ".join(rows[0][7]))
+
+
+# ---- the language: macros against the for loops scn had before them ----
+
+# The issue's targets: 10^6 objects from a recursive macro load in at most LANG_TARGET times
+# the time of the same objects from for loops, and a scene of 10^5 macro calls is reported
+# per call.
+LANG_TARGET = 1.5
+TREE_DEPTH = 19  # levels 0 .. 19: 2^20 - 1 = 1048575 spheres, one a call
+CALLS = 100000
+# These loads take 0.02 to 0.3 s, which one of this machine's slow spells moves by half: each
+# scene runs at least the runs asked for and until it has taken LANG_WALL seconds in all, up
+# to LANG_MAX_RUNS runs, the two of a pair taking turns (and turns at going first).
+LANG_WALL = 4.0
+LANG_MAX_RUNS = 25
+# A run of the 10^5-call scenes evaluates them CALL_FRAMES times in one process (--frames): the
+# first is the load, as the tree's; the others, in memory the first left warm, measure the
+# evaluation itself. --stats gives a phase to the millisecond, 10 ns a call: the evaluations'
+# interquartile mean, over many, resolves less than that (a median stays on the milliseconds).
+CALL_FRAMES = 20
+
+STATS_EVAL = re.compile(r"^evaluation: (\d+) steps, (\d+) calls", re.M)
+STATS_SCENE = re.compile(r"^scene: (\d+) spheres, (\d+) planes, (\d+) triangles, (\d+) solids", re.M)
+
+
+def scn_load(scene, out, frames=1):
+    """One process's loads of the scene: for each frame, --stats' parse + check + evaluate (their
+    sum is the exact clock's); the evaluation's steps and calls, the objects, and the process's
+    CPU seconds (user + sys). The render after a load is one pixel, --accel none, one thread:
+    what follows the load costs little, and the same for two scenes of the same objects."""
+    cmd = [SCN, "render", scene, "-o", out, "-W", "1", "-H", "1", "-j", "1", "--accel", "none", "--stats",
+           "--no-progress"] + (["--frames", "0..%d" % frames] if frames > 1 else [])
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    err = p.stderr.read()
+    _, status, ru = os.wait4(p.pid, 0)
+    p.returncode = os.waitstatus_to_exitcode(status)
+    if p.returncode != 0:
+        sys.exit("bench: %s failed (status %d):\n%s" % (" ".join(cmd), p.returncode, err[-2000:]))
+    loads = [sum(float(x) for x in t.groups()[:3]) for t in STATS_TIME.finditer(err)]
+    e, n = STATS_EVAL.search(err), STATS_SCENE.search(err)
+    if len(loads) != frames or not e or not n:
+        sys.exit("bench: no --stats in scn's output:\n" + err[-2000:])
+    return {"load": loads[0], "again": loads[1:], "steps": int(e.group(1)), "calls": int(e.group(2)),
+            "objects": int(n.group(1)) + int(n.group(2)) + int(n.group(3)) + int(n.group(4)),
+            "cpu": ru.ru_utime + ru.ru_stime}
+
+
+def load_pair(a, b, out, runs, frames=1):
+    """Runs of scenes a and b taking turns: ([runs of a], [runs of b])."""
+    ra, rb = [], []
+    spent = lambda: sum(r["load"] + sum(r["again"]) for r in ra + rb)
+    while len(ra) < runs or (spent() < 2 * LANG_WALL and len(ra) < LANG_MAX_RUNS):
+        log("bench: language: %s and %s, run %d" % (os.path.basename(a), os.path.basename(b), len(ra) + 1))
+        if len(ra) % 2 == 0:
+            ra.append(scn_load(a, out, frames))
+            rb.append(scn_load(b, out, frames))
+        else:
+            rb.append(scn_load(b, out, frames))
+            ra.append(scn_load(a, out, frames))
+    return ra, rb
+
+
+def dumped_objects(scene):
+    """scn check --dump's object lines without their index, sorted (the objects, whatever order
+    made them), and its other lines in order."""
+    p = subprocess.run([SCN, "check", "--dump", scene], capture_output=True)
+    if p.returncode != 0:
+        sys.exit("bench: scn check --dump %s failed:\n%s" % (scene, p.stderr.decode()[-2000:]))
+    others, objects = [], []
+    for line in p.stdout.split(b"\n"):
+        kind, _, rest = line.partition(b" ")
+        index, _, rest = rest.partition(b" ")
+        if index.isdigit() and rest:  # "sphere 12 center ...", not "max_depth 5"
+            objects.append(kind + b" " + rest)
+        else:
+            others.append(line)
+    objects.sort()
+    return others, objects
+
+
+def same_objects(a, b):
+    """The number of objects if scenes a and b make the same ones (the same dump, but for the
+    objects' order), else exits: the comparison of their loads would mean nothing."""
+    da = dumped_objects(a)
+    if da != dumped_objects(b):
+        sys.exit("bench: %s and %s do not make the same objects (scn check --dump)" % (a, b))
+    return len(da[1])
+
+
+def language(work, runs):
+    """{"tree": (macro runs, loops runs), "calls": (macro runs, inline runs)}, and the
+    objects' counts, checked the same in each pair."""
+    paths = {}
+    for name, write in (("tree-macro", lambda p: scenes.sphere_tree(p, TREE_DEPTH, True)),
+                        ("tree-loops", lambda p: scenes.sphere_tree(p, TREE_DEPTH, False)),
+                        ("calls-macro", lambda p: scenes.sphere_calls(p, CALLS, True)),
+                        ("calls-inline", lambda p: scenes.sphere_calls(p, CALLS, False))):
+        paths[name] = os.path.join(work, name + ".scn")
+        write(paths[name])
+    log("bench: language: comparing the objects (scn check --dump)")
+    same = {"tree": same_objects(paths["tree-macro"], paths["tree-loops"]),
+            "calls": same_objects(paths["calls-macro"], paths["calls-inline"])}
+    frames_dir = os.path.join(work, "language-frames")
+    os.makedirs(frames_dir, exist_ok=True)
+    result = {"tree": load_pair(paths["tree-macro"], paths["tree-loops"], os.path.join(work, "language.png"), runs),
+              "calls": load_pair(paths["calls-macro"], paths["calls-inline"], os.path.join(frames_dir, "f.png"), runs,
+                                 CALL_FRAMES)}
+    return result, same
+
+
+def interquartile_mean(xs):
+    xs = sorted(xs)
+    q = len(xs) // 4
+    return statistics.mean(xs[q:len(xs) - q])
+
+
+def print_language(result, same, runs):
+    med = lambda rs, k: statistics.median(r[k] for r in rs)
+    print("the language of LANGUAGE.md section 10: load = parse + check + evaluate (scn render --stats; "
+          "1 pixel, --accel none, -j 1),")
+    print("a process each; the two scenes of a pair take turns, at least %d runs each and until the pair has "
+          "taken %.0f s, up to %d runs." % (runs, 2 * LANG_WALL, LANG_MAX_RUNS))
+    print("cpu s: the whole process's user + sys seconds (its start, loads, the scene's arrays, pixels, exit), "
+          "which differ in a pair only")
+    print("by the loads; the calls' runs load their scene %d times each (--frames; the load s columns: the "
+          "first)." % CALL_FRAMES)
+    print()
+    head = "%-13s %8s %8s %9s %5s | %8s %8s %8s | %7s" % ("scene", "objects", "calls", "steps", "runs", "load s",
+                                                        "min s", "max s", "cpu s")
+    print(head)
+    print("-" * len(head))
+    names = {"tree": ("tree macro", "tree loops"), "calls": ("calls macro", "calls inline")}
+    for pair in ("tree", "calls"):
+        for name, rs in zip(names[pair], result[pair]):
+            print("%-13s %8d %8d %9d %5d | %8.3f %8.3f %8.3f | %7.3f" %
+                  (name, rs[0]["objects"], rs[0]["calls"], rs[0]["steps"], len(rs), med(rs, "load"),
+                   min(r["load"] for r in rs), max(r["load"] for r in rs), med(rs, "cpu")))
+    print()
+    ra, rb = result["tree"]
+    ratio = med(ra, "load") / med(rb, "load")
+    paired = statistics.median(a["load"] / b["load"] for a, b in zip(ra, rb))
+    fast = min(r["load"] for r in ra) / min(r["load"] for r in rb)
+    print("tree macro: %d spheres from one call each of def tree(x, y, d), the same objects as tree loops' "
+          "(sorted dumps equal):" % same["tree"])
+    print("its load takes %.2fx the loops' (the medians; the median of the ratios run by run %.2fx, the fastest "
+          "runs' %.2fx):" % (ratio, paired, fast))
+    print("target %.1fx, %s; %.0f ns a call, %.0f ns a sphere more than the loops'" %
+          (LANG_TARGET, "met" if ratio <= LANG_TARGET else "missed by %.0f%%" % (100 * (ratio / LANG_TARGET - 1)),
+           med(ra, "load") / ra[0]["calls"] * 1e9, (med(ra, "load") - med(rb, "load")) / same["tree"] * 1e9))
+    ca, cb = result["calls"]
+    calls = ca[0]["calls"]
+    again = [interquartile_mean([x for r in rs for x in r["again"]]) for rs in (ca, cb)]
+    count = len(ca) * (CALL_FRAMES - 1)
+    print("calls macro: %d calls of def ball(i), one sphere each, the same objects as calls inline's: a load "
+          "%.0f ns a call (the median)," % (calls, med(ca, "load") / calls * 1e9))
+    print("%.0f ns more than the inline sphere's; evaluated again in the same process (%d times, the interquartile "
+          "mean) %.0f ns a call," % ((med(ca, "load") - med(cb, "load")) / calls * 1e9, count, again[0] / calls * 1e9))
+    print("inline %.0f ns a sphere: a call's own cost %.1f ns (by the processes' cpu medians, %.1f ns)" %
+          (again[1] / calls * 1e9, (again[0] - again[1]) / calls * 1e9,
+           (med(ca, "cpu") - med(cb, "cpu")) / (CALL_FRAMES * calls) * 1e9))
 
 
 # ---- the scaling study ----
@@ -329,9 +494,9 @@ def main():
     ap.add_argument("--quick", action="store_true", help="one run of each, not three")
     ap.add_argument("--runs", type=int, help="runs of each measurement (default 3, --quick 1)")
     ap.add_argument("--full", action="store_true", help="also scn converge examples/whitted.scn (5 minutes)")
-    ap.add_argument("--only", choices=["table", "converge", "scaling", "embree"], action="append",
-                    help="run only these parts (repeatable); default: table, scaling and embree, and converge "
-                         "with --full")
+    ap.add_argument("--only", choices=["table", "language", "converge", "scaling", "embree"], action="append",
+                    help="run only these parts (repeatable); default: table, language, scaling and embree, and "
+                         "converge with --full")
     ap.add_argument("--scene", action="append", metavar="NAME",
                     help="the table's scenes to run, by the name in its first column (repeatable: "
                          "--scene 'quadrics 1e4' --scene 'csg wall'); default every one")
@@ -340,7 +505,7 @@ def main():
     ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
     a = ap.parse_args()
     runs = a.runs or (1 if a.quick else 3)
-    parts = a.only or ["table", "scaling", "embree"] + (["converge"] if a.full else [])
+    parts = a.only or ["table", "language", "scaling", "embree"] + (["converge"] if a.full else [])
     os.makedirs(a.work, exist_ok=True)
     subprocess.run(["make", "-s", "-C", TOP, "scn"], check=True, stdout=subprocess.DEVNULL)
     with open("/proc/loadavg") as f:
@@ -354,6 +519,10 @@ def main():
             if unknown:
                 sys.exit("bench: no scene %s in the table" % ", ".join(sorted(unknown)))
         print_scene_table(scene_table(a.work, runs, table_scenes, a.scene), runs)
+        print()
+        sys.stdout.flush()
+    if "language" in parts:
+        print_language(*language(a.work, runs), runs)
         print()
         sys.stdout.flush()
     if "converge" in parts:

@@ -117,10 +117,10 @@ camera {{ location <-6, 5, -16>  look_at <4, 5.5, 0>  fov 60  resolution {w}, {h
 light  {{ position <-10, 20, -25> }}
 samples {{ count 5  pattern jittered }}
 skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
-material floor {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 1) }}
+material ground {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 1) }}
 material brick {{ diffuse <0.7, 0.3, 0.2>  specular 0.1  shininess 20 }}
 material bore  {{ diffuse <0.9, 0.85, 0.7> }}
-plane {{ <0, 1, 0>, 0  material floor }}
+plane {{ <0, 1, 0>, 0  material ground }}
 for row in 0 .. {rows} {{
   for col in 0 .. {cols} {{
     let x = 0.5 * (row - 2 * floor(row / 2)) + col - {half}
@@ -138,6 +138,91 @@ def csg_wall(path, rows=25, cols=40, width=640, height=480):
     """rows x cols bricks in a running bond, each a difference of a box and a cylinder."""
     write(path, CSG_WALL.format(n=rows * cols, rows=rows, cols=cols, half=cols / 2, w=width, h=height))
 
+
+
+# ---- the language of section 10: macros against the loops that made the same objects before ----
+
+MACRO_SPHERES = """// a binary tree of {n} spheres made by a macro that calls itself twice, one sphere a call:
+// level y holds the spheres x = 0 .. 2^y - 1 at <x, y, 0>
+def tree(x, y, d) {{
+  sphere {{ <x, y, 0>, 0.4 }}
+  if d > 0 {{ tree(2 * x, y + 1, d - 1)  tree(2 * x + 1, y + 1, d - 1) }}
+}}
+tree(0, 0, {depth})
+"""
+
+LOOP_SPHERES = """// the {n} spheres of the macro tree, written with for loops as before macros: level y
+// holds the spheres x = 0 .. 2^y - 1 at <x, y, 0>
+for y in 0 .. {levels} {{
+  for x in 0 .. pow(2, y) {{ sphere {{ <x, y, 0>, 0.4 }} }}
+}}
+"""
+
+
+def sphere_tree(path, depth, macro):
+    """2^(depth + 1) - 1 spheres in levels 0 .. depth, from a recursive macro (one sphere a
+    call) or from nested for loops: the same spheres, in another order."""
+    text = MACRO_SPHERES if macro else LOOP_SPHERES
+    write(path, text.format(n=2 ** (depth + 1) - 1, depth=depth, levels=depth + 1))
+
+
+MACRO_CALLS = """// {n} calls of a macro that makes one sphere, from a for loop
+def ball(i) {{ sphere {{ <mod(i, 100), floor(i / 100), 0>, 0.4 }} }}
+for i in 0 .. {n} {{ ball(i) }}
+"""
+
+INLINE_CALLS = """// the {n} spheres of the macro-call scene with the sphere written in the loop
+for i in 0 .. {n} {{ sphere {{ <mod(i, 100), floor(i / 100), 0>, 0.4 }} }}
+"""
+
+
+def sphere_calls(path, n, macro):
+    """n spheres from a loop, each from a call of a one-sphere macro or written inline."""
+    write(path, (MACRO_CALLS if macro else INLINE_CALLS).format(n=n))
+
+
+MACRO_TREE = """// a tree of {branches} branches, each a cylinder with a sphere at its joint, and {branches_half}
+// leaves: a macro that calls itself twice a branch, turned and scaled by rand()
+camera {{ location <0, 7.5, -25>  look_at <0, 7, 0>  fov 55  resolution {w}, {h} }}
+light  {{ position <-14, 24, -18> }}
+samples {{ count 5  pattern jittered }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+material ground {{ diffuse checker(<0.9, 0.9, 0.9>, <0.3, 0.3, 0.35>, 2) }}
+material bark  {{ diffuse <0.45, 0.3, 0.2>  specular 0.1  shininess 20 }}
+material leaf1 {{ diffuse <0.2, 0.6, 0.15>  specular 0.2  shininess 30 }}
+material leaf2 {{ diffuse <0.5, 0.7, 0.1>  specular 0.2  shininess 30 }}
+material leaf3 {{ diffuse <0.8, 0.45, 0.1>  specular 0.2  shininess 30 }}
+plane {{ <0, 1, 0>, 0  material ground }}
+let leaves = [leaf1, leaf2, leaf3]
+// a unit vector at random, from the key k
+def jitter(k) = normalize(<rand(k) - 0.5, rand(k + 1) - 0.5, rand(k + 2) - 0.5>)
+// a branch from base along dir (a unit vector), and below it two branches turned apart
+// about a random axis across it; k numbers the branches as a heap does (children 2k, 2k + 1)
+def branch(base, dir, len, r, d, k) {{
+  let tip = base + dir * len
+  cylinder {{ base, tip, r  material bark }}
+  sphere {{ tip, r  material bark }}
+  if d > 0 {{
+    let side = normalize(cross(dir, jitter(7 * k)))
+    let spread = 0.55 + 0.5 * rand(7 * k + 3)
+    branch(tip, normalize(dir + spread * side + <0, 0.25, 0>), len * (0.68 + 0.2 * rand(7 * k + 4)), r * 0.72,
+           d - 1, 2 * k)
+    branch(tip, normalize(dir - spread * side + <0, 0.25, 0>), len * (0.68 + 0.2 * rand(7 * k + 5)), r * 0.72,
+           d - 1, 2 * k + 1)
+  }} else {{
+    let colour = leaves[floor(3 * rand(7 * k + 2))]
+    sphere {{ tip, 0.09 + 0.05 * rand(7 * k + 6)  material colour }}
+  }}
+}}
+branch(<0, 0, 0>, <0, 1, 0>, 3, 0.3, {depth}, 1)
+"""
+
+
+def macro_tree(path, depth=13, width=640, height=480):
+    """A recursive tree of 2^(depth + 1) - 1 branches (a cylinder and a sphere each) and
+    2^depth leaves (spheres): 5 * 2^depth - 2 objects, 40958 at depth 13."""
+    branches = 2 ** (depth + 1) - 1
+    write(path, MACRO_TREE.format(branches=branches, branches_half=2 ** depth, depth=depth, w=width, h=height))
 
 def bunny(path, ply, example):
     """examples/bunny.scn with its mesh file replaced by ply (an absolute path), and 5 samples
