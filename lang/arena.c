@@ -5,6 +5,7 @@
 #include "arena.h"
 
 #include <stdalign.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,11 +28,15 @@ enum { BLOCK_SIZE = 64 * 1024 };
 struct block {
 	struct block *next;
 	size_t used, size;
+	unsigned long long seq;    /* blocks are numbered as made: arena_release frees the newer */
 	alignas(max_align_t) unsigned char data[];
 };
 
 struct arena {
 	struct block *head;
+	unsigned long long nblocks;
+	bool kept;                 /* arena_keep was called: arena_reset goes back to floor */
+	struct arena_mark floor;
 };
 
 struct arena *arena_new(void)
@@ -39,19 +44,61 @@ struct arena *arena_new(void)
 	return xcalloc(1, sizeof(struct arena));
 }
 
+static void free_blocks(struct block *b)
+{
+	for (struct block *next; b; b = next) {
+		next = b->next;
+		free(b);
+	}
+}
+
 void arena_free(struct arena *a)
 {
 	if (!a)
 		return;
-	for (struct block *b = a->head, *next; b; b = next) {
-		next = b->next;
+	free_blocks(a->head);
+	free(a);
+}
+
+void arena_keep(struct arena *a)
+{
+	a->kept = true;
+	a->floor = arena_mark(a);
+}
+
+struct arena_mark arena_mark(const struct arena *a)
+{
+	return (struct arena_mark){ a->head, a->head ? a->head->used : 0, a->nblocks };
+}
+
+/* The blocks made after the mark are newer than its count. A new block goes first in the
+ * list, or (a big one) right after the first: the newer blocks are the ones ahead of the
+ * head at the mark and a run right after it, and that head is the only older block
+ * allocated from since. Releasing costs what it frees. */
+void arena_release(struct arena *a, struct arena_mark m)
+{
+	while (a->head && a->head->seq >= m.seq) {
+		struct block *b = a->head;
+		a->head = b->next;
 		free(b);
 	}
-	free(a);
+	if (!a->head)
+		return;
+	while (a->head->next && a->head->next->seq >= m.seq) {
+		struct block *b = a->head->next;
+		a->head->next = b->next;
+		free(b);
+	}
+	if (a->head == m.head)
+		a->head->used = m.used;
 }
 
 void arena_reset(struct arena *a)
 {
+	if (a->kept) {
+		arena_release(a, a->floor);
+		return;
+	}
 	/* one standard block is kept: a load that resets after every statement reuses the
 	 * same (cached) memory rather than going back to malloc; under AddressSanitizer all
 	 * goes, so that a use after the reset is caught */
@@ -84,6 +131,7 @@ void *arena_alloc(struct arena *a, size_t size)
 		b = xmalloc(sizeof *b + cap);
 		b->used = 0;
 		b->size = cap;
+		b->seq = a->nblocks++;
 		if (a->head && cap != BLOCK_SIZE) {
 			/* keep the current block's free space for the next small request */
 			b->next = a->head->next;

@@ -28,7 +28,10 @@ static const size_t node_size[] = {
 	[AST_NUM] = NODE_SIZE(num), [AST_STR] = NODE_SIZE(str), [AST_VEC] = NODE_SIZE(vec),
 	[AST_IDENT] = NODE_SIZE(ident), [AST_NEG] = NODE_SIZE(bin), [AST_BINARY] = NODE_SIZE(bin),
 	[AST_CALL] = NODE_SIZE(call), [AST_MEMBER] = NODE_SIZE(member), [AST_ERROR] = offsetof(struct ast, u),
+	[AST_BOOL] = NODE_SIZE(truth), [AST_ARRAY] = NODE_SIZE(elems), [AST_INDEX] = NODE_SIZE(bin),
+	[AST_NOT] = NODE_SIZE(bin), [AST_COND] = NODE_SIZE(cond),
 	[AST_LET] = NODE_SIZE(let), [AST_INCLUDE] = NODE_SIZE(include), [AST_FOR] = NODE_SIZE(loop),
+	[AST_IF] = NODE_SIZE(cond_stmt), [AST_DEF] = NODE_SIZE(def), [AST_MACRO_CALL] = NODE_SIZE(call),
 	[AST_BLOCK_STMT] = NODE_SIZE(stmt), [AST_UNKNOWN_STMT] = NODE_SIZE(item), [AST_ITEM] = NODE_SIZE(item),
 };
 
@@ -119,6 +122,75 @@ struct ast *ast_member(struct arena *a, struct span sp, struct ast *e, char *nam
 	n->u.member.comp_span = comp_span;
 	n->u.member.comp = -1;
 	n->depth = deeper(e, 1);
+	return n;
+}
+
+struct ast *ast_bool(struct arena *a, struct span sp, bool truth)
+{
+	struct ast *n = ast_new(a, AST_BOOL, sp);
+	n->u.truth = truth;
+	return n;
+}
+
+struct ast *ast_array(struct arena *a, struct span sp, struct ast_list elems)
+{
+	struct ast *n = ast_new(a, AST_ARRAY, sp);
+	n->u.elems = elems;
+	for (size_t i = 0; i < elems.n; i++)
+		n->depth = deeper(elems.v[i], n->depth);
+	return n;
+}
+
+struct ast *ast_index(struct arena *a, struct span sp, struct ast *e, struct ast *index)
+{
+	struct ast *n = ast_binary(a, sp, '[', e, index);
+	n->kind = AST_INDEX;
+	return n;
+}
+
+struct ast *ast_not(struct arena *a, struct span sp, struct ast *e)
+{
+	struct ast *n = ast_neg(a, sp, e);
+	n->kind = AST_NOT;
+	n->u.bin.op = '!';
+	return n;
+}
+
+struct ast *ast_cond(struct arena *a, struct span sp, struct ast *c, struct ast *x, struct ast *y)
+{
+	struct ast *n = ast_new(a, AST_COND, sp);
+	n->u.cond.c = c;
+	n->u.cond.a = x;
+	n->u.cond.b = y;
+	n->depth = deeper(y, deeper(x, deeper(c, 1)));
+	return n;
+}
+
+struct ast *ast_if(struct arena *a, struct span sp, struct ast *cond, struct ast_list then, struct ast_list other)
+{
+	struct ast *n = ast_new(a, AST_IF, sp);
+	n->u.cond_stmt.cond = cond;
+	n->u.cond_stmt.then = then;
+	n->u.cond_stmt.other = other;
+	return n;
+}
+
+struct ast *ast_def(struct arena *a, struct span sp, char *name, struct span name_span, struct ast_list params,
+                    struct ast *value, struct ast_list body)
+{
+	struct ast *n = ast_new(a, AST_DEF, sp);
+	n->u.def.name = name;
+	n->u.def.name_span = name_span;
+	n->u.def.params = params;
+	n->u.def.value = value;
+	n->u.def.body = body;
+	return n;
+}
+
+struct ast *ast_macro_call(struct arena *a, struct span sp, char *name, struct span name_span, struct ast_list args)
+{
+	struct ast *n = ast_call(a, sp, name, name_span, args);
+	n->kind = AST_MACRO_CALL;
 	return n;
 }
 

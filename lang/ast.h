@@ -15,17 +15,28 @@ struct arena;
 enum ast_kind {
 	/* expressions */
 	AST_NUM, AST_STR, AST_VEC, AST_IDENT, AST_NEG, AST_BINARY, AST_CALL, AST_MEMBER,
+	AST_BOOL, AST_ARRAY, AST_INDEX, AST_NOT, AST_COND,
 	AST_ERROR,  /* stands for an expression already reported as wrong */
 	/* statements */
-	AST_LET, AST_INCLUDE, AST_FOR,
+	AST_LET, AST_INCLUDE, AST_FOR, AST_IF, AST_DEF,
+	AST_MACRO_CALL, /* NAME(ARGS) as a statement: u.call */
 	AST_BLOCK_STMT, /* camera, light, material NAME, sphere, ..., samples { }, samples N, max_depth N */
 	AST_UNKNOWN_STMT, /* a statement that starts with a name: u.item holds it, for the message */
 	/* parts of a block */
 	AST_ITEM,
 };
 
-/* Static type of an expression, set by check.c. */
-enum ast_type { TYPE_NONE, TYPE_NUM, TYPE_VEC, TYPE_STR, TYPE_PIGMENT, TYPE_MATERIAL };
+/* Type of an expression: check.c's static one, or a value's own (struct value). TYPE_ANY
+ * is known only when the scene runs: a parameter, an array's element, what a function
+ * returns. */
+enum ast_type {
+	TYPE_NONE, TYPE_NUM, TYPE_VEC, TYPE_STR, TYPE_PIGMENT, TYPE_MATERIAL, TYPE_BOOL, TYPE_ARRAY, TYPE_ANY,
+};
+
+/* The operators of AST_BINARY besides + - * /: comparisons and the logical ones. */
+enum {
+	OP_LT = '<', OP_GT = '>', OP_LE = 'l', OP_GE = 'g', OP_EQ = '=', OP_NE = '!', OP_AND = '&', OP_OR = '|',
+};
 
 struct ast_list {
 	struct ast **v;
@@ -63,13 +74,34 @@ struct ast {
 		struct { char *text; size_t len; } str;
 		struct ast *vec[3];
 		struct { char *name; struct binding *ref; int builtin; } ident;
-		struct { char op; struct ast *l, *r; } bin;   /* AST_NEG uses l */
-		struct { char *name; struct span name_span; struct ast_list args; int fn; } call;
+		struct { char op; struct ast *l, *r; } bin;   /* AST_NEG and AST_NOT use l; AST_INDEX: l[r] */
+		bool truth;                                   /* AST_BOOL */
+		struct ast_list elems;                        /* AST_ARRAY */
+		struct { char *name; struct span name_span; struct ast_list args; int fn;
+		         struct binding *ref; } call;        /* fn: a built-in, or -1 for ref's def */
+		struct { struct ast *c, *a, *b; } cond;       /* AST_COND: c ? a : b */
 		struct { struct ast *e; int comp; struct span comp_span; char *name; } member;
 		struct { char *name; struct span name_span; struct ast *value; struct binding *b; } let;
 		struct { char *path; struct span path_span; struct ast_list body; bool loaded; } include;
-		struct { char *var; struct span var_span; struct ast *from, *to;
+		struct { char *var; struct span var_span; struct ast *from, *to; /* to NULL: for var in from */
 		         struct ast_list body; struct binding *b; } loop;
+		struct { struct ast *cond; struct ast_list then, other; } cond_stmt; /* other: else */
+		struct {
+			char *name;
+			struct span name_span;
+			struct ast_list params;    /* AST_IDENT nodes; check.c binds them (ident.ref) */
+			struct ast *value;         /* a function's expression, or NULL for a macro */
+			struct ast_list body;      /* a macro's statements */
+			struct binding *b;
+			/* check.c: the slots of the bindings inside it, [slot_lo, slot_hi), which a
+			 * call that starts while another runs saves and restores; eval.c: how many
+			 * calls of it are running */
+			unsigned slot_lo, slot_hi;
+			unsigned active;
+			/* check.c, for a macro: its first statement (through the macros it calls)
+			 * that cannot be a CSG's member, or NULL */
+			const struct ast *not_member;
+		} def;
 		struct {
 			enum kw kw;            /* which statement */
 			struct span kw_span;
@@ -104,6 +136,16 @@ struct ast *ast_binary(struct arena *a, struct span sp, char op, struct ast *l, 
 struct ast *ast_call(struct arena *a, struct span sp, char *name, struct span name_span,
                      struct ast_list args);
 struct ast *ast_member(struct arena *a, struct span sp, struct ast *e, char *name, struct span comp_span);
+struct ast *ast_bool(struct arena *a, struct span sp, bool truth);
+struct ast *ast_array(struct arena *a, struct span sp, struct ast_list elems);
+struct ast *ast_index(struct arena *a, struct span sp, struct ast *e, struct ast *index);
+struct ast *ast_not(struct arena *a, struct span sp, struct ast *e);
+struct ast *ast_cond(struct arena *a, struct span sp, struct ast *c, struct ast *x, struct ast *y);
+struct ast *ast_if(struct arena *a, struct span sp, struct ast *cond, struct ast_list then, struct ast_list other);
+/* value NULL: a macro with body */
+struct ast *ast_def(struct arena *a, struct span sp, char *name, struct span name_span, struct ast_list params,
+                    struct ast *value, struct ast_list body);
+struct ast *ast_macro_call(struct arena *a, struct span sp, char *name, struct span name_span, struct ast_list args);
 struct ast *ast_let(struct arena *a, struct span sp, char *name, struct span name_span, struct ast *value);
 struct ast *ast_include(struct arena *a, struct span sp, char *path, struct span path_span);
 struct ast *ast_for(struct arena *a, struct span sp, char *var, struct span var_span,

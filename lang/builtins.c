@@ -21,6 +21,7 @@ static const struct fn_info table[BUILTIN_COUNT] = {
 	{ "min", 2, -1 }, { "max", 2, -1 },
 	{ "dot", 2, 2 }, { "cross", 2, 2 }, { "normalize", 1, 1 }, { "length", 1, 1 },
 	{ "rand", 1, 1 },
+	{ "len", 1, 1 }, { "str", 1, 1 },
 	{ "checker", 3, 3 },
 	{ "pi", 0, 0 }, { "clock", 0, 0 }, { "frame", 0, 0 },
 };
@@ -41,37 +42,51 @@ int builtin_max_args(enum builtin b) { return table[b].max_args; }
 enum ast_type builtin_type(enum builtin b, const enum ast_type *args, int nargs, int *bad_arg,
                            const char **why)
 {
-	bool any_vec = false;
-	for (int i = 0; i < nargs; i++)
+	if (b == FN_LEN) {
+		if (args[0] == TYPE_ARRAY || args[0] == TYPE_STR || args[0] == TYPE_ANY)
+			return TYPE_NUM;
+		*bad_arg = 0;
+		*why = "len takes an array or a string";
+		return TYPE_NONE;
+	}
+	bool any_vec = false, any_unknown = false;
+	for (int i = 0; i < nargs; i++) {
+		if (args[i] != TYPE_NUM && args[i] != TYPE_VEC && args[i] != TYPE_ANY) {
+			*bad_arg = i;
+			*why = "expected a number or a vector";
+			return TYPE_NONE;
+		}
 		any_vec |= args[i] == TYPE_VEC;
+		any_unknown |= args[i] == TYPE_ANY;
+	}
 	switch (b) {
 	case FN_DOT: case FN_LENGTH:
 		return TYPE_NUM;
 	case FN_CROSS: case FN_NORMALIZE:
 		return TYPE_VEC;
-	case FN_RAND:
-		if (args[0] != TYPE_NUM) {
+	case FN_RAND: case FN_STR:
+		if (args[0] == TYPE_VEC) {
 			*bad_arg = 0;
-			*why = "rand takes a number";
+			*why = b == FN_RAND ? "rand takes a number" : "str takes a number (write str(v.x) for a component)";
 			return TYPE_NONE;
 		}
-		return TYPE_NUM;
+		return b == FN_RAND ? TYPE_NUM : TYPE_STR;
 	case FN_CHECKER:
-		if (args[2] != TYPE_NUM) {
+		if (args[2] == TYPE_VEC) {
 			*bad_arg = 2;
 			*why = "the checker's size must be a number";
 			return TYPE_NONE;
 		}
 		return TYPE_PIGMENT;
 	default:
-		return any_vec ? TYPE_VEC : TYPE_NUM;
+		return any_vec ? TYPE_VEC : any_unknown ? TYPE_ANY : TYPE_NUM;
 	}
 }
 
-static void broadcast(const struct value *in, enum ast_type t, double out[3])
+static void broadcast(const struct value *in, double out[3])
 {
 	for (int k = 0; k < 3; k++)
-		out[k] = in->v[t == TYPE_VEC ? k : 0];
+		out[k] = in->v[in->type == TYPE_VEC ? k : 0];
 }
 
 /* One component of a componentwise function; *why is set on a domain error. */
@@ -133,32 +148,40 @@ double builtin_rand(double k)
 	return (double)(z >> 11) * 0x1.0p-53;
 }
 
-const char *builtin_apply(enum builtin b, const struct value *args, const enum ast_type *types,
-                          int nargs, enum ast_type result, struct value *out)
+const char *builtin_apply(enum builtin b, const struct value *args, int nargs, enum ast_type result,
+                          struct value *out, char text[32])
 {
 	const char *why = NULL;
 	double a[3], c[3];
 	int comps = result == TYPE_VEC ? 3 : 1;
 	memset(out, 0, sizeof *out);
+	out->type = (uint8_t)result;
 	switch (b) {
+	case FN_LEN:
+		out->v[0] = args[0].len;
+		return NULL;
+	case FN_STR:
+		out->s = value_number_text(args[0].v[0], text);
+		out->len = (uint32_t)strlen(out->s);
+		return NULL;
 	case FN_DOT:
-		broadcast(&args[0], types[0], a);
-		broadcast(&args[1], types[1], c);
+		broadcast(&args[0], a);
+		broadcast(&args[1], c);
 		out->v[0] = a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
 		break;
 	case FN_CROSS:
-		broadcast(&args[0], types[0], a);
-		broadcast(&args[1], types[1], c);
+		broadcast(&args[0], a);
+		broadcast(&args[1], c);
 		out->v[0] = a[1] * c[2] - a[2] * c[1];
 		out->v[1] = a[2] * c[0] - a[0] * c[2];
 		out->v[2] = a[0] * c[1] - a[1] * c[0];
 		break;
 	case FN_LENGTH:
-		broadcast(&args[0], types[0], a);
+		broadcast(&args[0], a);
 		out->v[0] = hypot(hypot(a[0], a[1]), a[2]);
 		break;
 	case FN_NORMALIZE: {
-		broadcast(&args[0], types[0], a);
+		broadcast(&args[0], a);
 		double len = hypot(hypot(a[0], a[1]), a[2]);
 		if (len == 0)
 			return "normalize of a zero vector";
@@ -169,20 +192,17 @@ const char *builtin_apply(enum builtin b, const struct value *args, const enum a
 	case FN_RAND:
 		out->v[0] = builtin_rand(args[0].v[0]);
 		break;
-	case CONST_PI:
-		out->v[0] = M_PI;
-		break;
 	case FN_POW: case FN_MOD: case FN_ATAN2: case FN_MIN: case FN_MAX:
-		broadcast(&args[0], types[0], a);
+		broadcast(&args[0], a);
 		for (int i = 1; i < nargs; i++) {
-			broadcast(&args[i], types[i], c);
+			broadcast(&args[i], c);
 			for (int k = 0; k < comps; k++)
 				a[k] = apply2(b, a[k], c[k], &why);
 		}
 		memcpy(out->v, a, sizeof a);
 		break;
 	default:
-		broadcast(&args[0], types[0], a);
+		broadcast(&args[0], a);
 		for (int k = 0; k < comps; k++)
 			out->v[k] = apply1(b, a[k], &why);
 		break;

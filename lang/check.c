@@ -12,8 +12,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
+#include "builtins.h"
 #include "file.h"
 #include "lang.h"
 #include "suggest.h"
@@ -66,6 +66,8 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 	}
 	case KW_MESH: {
 		bool file = stmt->u.stmt.block->args.n > 0;
+		if (file)
+			check_value(c, stmt->u.stmt.block->args.v[0], S_STR, "a mesh's file name");
 		if (file && (seen[KW_VERTICES] || seen[KW_FACES] || seen[KW_NORMALS])) {
 			struct ast *x = seen[KW_VERTICES] ? seen[KW_VERTICES] : seen[KW_FACES] ? seen[KW_FACES] : seen[KW_NORMALS];
 			diag_error(c->diag, x->u.item.name_span, "a mesh read from a file takes no '%s'", item_name(x));
@@ -81,31 +83,12 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 		check_inverse(c, stmt, seen[KW_INVERSE]);
 }
 
-/* A pipe (or a socket) named in a scene, say /dev/stdin, could keep the check waiting
- * forever for a writer: it is refused (a scene on the command line may be one). */
-static const char *not_a_file(const char *path)
-{
-	struct stat st;
-	if (stat(path, &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
-		return "a pipe or a socket, not a file";
-	return NULL;
-}
-
 static void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what)
 {
 	char *path = file_resolve(src->dir, str->u.str.text);
-	const char *why = not_a_file(path);
-	FILE *f = why ? NULL : fopen(path, "rb");
-	int err = f || why ? 0 : errno;
-	if (f) {
-		/* opening a directory succeeds; reading it does not */
-		char byte;
-		if (fread(&byte, 1, 1, f) == 0 && ferror(f))
-			err = errno ? errno : EIO;
-		fclose(f);
-	}
-	if (err || why)
-		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, why ? why : strerror(err));
+	const char *why = file_unreadable(path);
+	if (why)
+		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, why);
 	free(path);
 }
 
@@ -139,6 +122,23 @@ static void check_csg(struct checker *c, struct ast *s)
 		check_inverse(c, s, seen[KW_INVERSE]);
 }
 
+/* mesh { NAME ... }: the grammar reads a leading name as an attribute; when it names a
+ * value, it is the mesh's file name. */
+static void mesh_file_name(struct checker *c, struct ast_block *block)
+{
+	if (block->args.n || !block->items.n)
+		return;
+	struct ast *first = block->items.v[0];
+	struct binding *b = first->u.item.kw < 0 && !first->u.item.args.n && !first->u.item.block
+	                    ? names_lookup(c, first->u.item.name) : NULL;
+	if (!b || names_class(b->kind) != NAMES_VALUES)
+		return;
+	ast_list_push(c->nodes, &block->args, ast_ident(c->nodes, first->u.item.name_span, first->u.item.name));
+	block->items.v++;
+	block->items.n--;
+	block->items.cap--;
+}
+
 static void check_block_stmt(struct checker *c, struct ast *s)
 {
 	enum kw kw = s->u.stmt.kw;
@@ -147,7 +147,10 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 		return;
 	}
 	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH) {
-		if (c->loop_depth)
+		if (c->def_depth)
+			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a definition: it is one per scene",
+			           kw_name(kw));
+		else if (c->loop_depth)
 			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a for loop", kw_name(kw));
 		else if (c->once[kw].seen) {
 			diag_error(c->diag, s->u.stmt.kw_span, "a scene has at most one '%s'", kw_name(kw));
@@ -170,6 +173,10 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 			s->u.stmt.b = names_bind(c, s->u.stmt.name, s->u.stmt.name_span, BIND_MATERIAL, TYPE_MATERIAL);
 		return;
 	}
+	if (kw == KW_LIGHT && c->macro && !c->macro->u.def.not_member)
+		c->macro->u.def.not_member = s;
+	if (kw == KW_MESH)
+		mesh_file_name(c, s->u.stmt.block);
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
 	c->defining = kw == KW_MATERIAL ? s->u.stmt.name : NULL;
 	bool complete = check_block(c, spec_of(kw), s->u.stmt.block, s->u.stmt.kw_span, seen);
@@ -202,7 +209,7 @@ static void check_include(struct checker *c, struct ast *inc)
 		return;
 	}
 	char *path = file_resolve(from->dir, name);
-	const char *why = not_a_file(path);
+	const char *why = file_not_regular(path);
 	if (why) {
 		diag_error(c->diag, at, "cannot read included file '%s': %s", name, why);
 		free(path);
@@ -277,7 +284,7 @@ static void unknown_in_csg(struct checker *c, struct ast *s)
 	bool object = loop || (sg.best ? sg.best == statement : braces);
 	hint = suggest_text(&sg, buf, sizeof buf);
 	if (loop)
-		diag_error(c->diag, s->u.item.name_span, "unknown statement '%s' in a for loop inside %s %s%s", name,
+		diag_error(c->diag, s->u.item.name_span, "unknown statement '%s' in %s inside %s %s%s", name, c->csg_body,
 		           c->csg->u.stmt.kw == KW_INTERSECTION ? "an" : "a", csg, hint);
 	else
 		diag_error(c->diag, s->u.item.name_span, "unknown %s '%s' in %s%s", object ? "object" : "attribute", name, csg,
@@ -287,7 +294,8 @@ static void unknown_in_csg(struct checker *c, struct ast *s)
 static void unknown_statement(struct checker *c, struct ast *s)
 {
 	static const enum kw statements[] = {
-		KW_LET, KW_INCLUDE, KW_FOR, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH,
+		KW_LET, KW_INCLUDE, KW_FOR, KW_IF, KW_DEF, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SKYBOX, KW_SAMPLES,
+		KW_MAX_DEPTH,
 	};
 	if (c->csg) {
 		unknown_in_csg(c, s);
@@ -303,6 +311,7 @@ static void unknown_statement(struct checker *c, struct ast *s)
 			suggest_consider(&sg, kw_name(statements[i]));
 		for (size_t i = 0; i < NOBJECTS; i++)
 			suggest_consider(&sg, kw_name(objects[i]));
+		names_suggest_visible(c, &sg, NAMES_MACROS);
 		hint = suggest_text(&sg, buf, sizeof buf);
 	}
 	diag_error(c->diag, s->u.item.name_span, "unknown statement '%s'%s", name, hint);
@@ -314,31 +323,31 @@ static struct span first_bytes(struct span sp, uint32_t len)
 	return (struct span){ sp.start, sp.start + len };
 }
 
-/* Whether s may stand in the CSG c->csg, or in a for loop there; reports it when not,
- * saying what may. Returns false when s is to be checked no further: not a misplaced let
- * or material, which are still bound, so that their uses say nothing more. */
+/* Whether s may stand in the CSG c->csg, or in a for loop or an if there; reports it
+ * when not, saying what may. Returns false when s is to be checked no further: not a
+ * misplaced let or material, which are still bound, so that their uses say nothing more. */
 static bool placed(struct checker *c, struct ast *s)
 {
 	const char *name = kw_name(c->csg->u.stmt.kw);
 	char csg[32];
 	snprintf(csg, sizeof csg, "%s %s", c->csg->u.stmt.kw == KW_INTERSECTION ? "an" : "a", name);
-	bool loop = c->csg_loops > 0;
+	bool body = c->csg_loops > 0;
 	char what[64];
 	struct span at;
 	switch (s->kind) {
-	case AST_LET:
-		if (loop) /* a loop's body is a scope */
+	case AST_LET: case AST_DEF:
+		if (body) /* a loop's or an if's body is a scope */
 			return true;
 		at = first_bytes(s->span, 3);
-		snprintf(what, sizeof what, "'let'");
+		snprintf(what, sizeof what, "'%s'", s->kind == AST_LET ? "let" : "def");
 		break;
 	case AST_INCLUDE:
 		at = first_bytes(s->span, 7);
 		snprintf(what, sizeof what, "'include'");
 		break;
-	case AST_ITEM: /* an item in a for loop's body: the CSG's own are apart */
-		diag_error(c->diag, s->u.item.name_span, "'%s' cannot be in a for loop inside %s; give it to the %s, "
-		           "or to each object", item_name(s), csg, name);
+	case AST_ITEM: /* an item in a for loop's or an if's body: the CSG's own are apart */
+		diag_error(c->diag, s->u.item.name_span, "'%s' cannot be in %s inside %s; give it to the %s, "
+		           "or to each object", item_name(s), c->csg_body, csg, name);
 		return false;
 	case AST_BLOCK_STMT:
 		if (kw_is_object(s->u.stmt.kw))
@@ -351,16 +360,139 @@ static bool placed(struct checker *c, struct ast *s)
 		}
 		snprintf(what, sizeof what, "'%s'", kw_name(s->u.stmt.kw));
 		break;
-	default: /* a for loop; an unknown name, a syntax error: each says so */
+	default: /* a for loop, an if, a macro call; an unknown name, a syntax error: each says so */
 		return true;
 	}
-	if (loop)
-		diag_error(c->diag, at, "%s cannot be in a for loop inside %s; a for loop in a CSG holds objects, for "
-		           "loops and let", what, csg);
+	if (body)
+		diag_error(c->diag, at, "%s cannot be in %s inside %s; there it holds objects, for loops, ifs, macro "
+		           "calls and let", what, c->csg_body, csg);
 	else
-		diag_error(c->diag, at, "%s cannot be inside %s; a CSG holds objects, for loops of objects, material, "
-		           "transforms and inverse", what, csg);
-	return s->kind == AST_LET;
+		diag_error(c->diag, at, "%s cannot be inside %s; a CSG holds objects (or for loops, ifs and macro calls "
+		           "that make them), material, transforms and inverse", what, csg);
+	return s->kind == AST_LET || s->kind == AST_DEF;
+}
+
+/* A body of statements in a scope of its own: a for loop's or an if's (what, for messages). */
+static void check_body(struct checker *c, struct ast_list *body, const char *what)
+{
+	const char *outer = c->csg_body;
+	names_push_scope(c);
+	c->csg_loops += c->csg != NULL;
+	c->csg_body = what;
+	check_stmts(c, body);
+	c->csg_body = outer;
+	c->csg_loops -= c->csg != NULL;
+	names_pop_scope(c);
+}
+
+/* The statements a scene has at most one of. */
+static const enum kw once_kws[] = { KW_CAMERA, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH };
+#define NONCE (sizeof once_kws / sizeof once_kws[0])
+
+static void check_if(struct checker *c, struct ast *s)
+{
+	char why[160];
+	struct ast *cond = s->u.cond_stmt.cond;
+	enum ast_type t = check_expr(c, cond);
+	if (t != TYPE_NONE && !type_condition(t, why, sizeof why))
+		diag_error(c->diag, cond->span, "%s", why);
+	/* the branches are alternatives: each may hold the scene's one camera */
+	struct { bool seen; struct span at; } before[NONCE], then[NONCE];
+	for (size_t k = 0; k < NONCE; k++) {
+		before[k].seen = c->once[once_kws[k]].seen;
+		before[k].at = c->once[once_kws[k]].at;
+	}
+	check_body(c, &s->u.cond_stmt.then, "an if");
+	for (size_t k = 0; k < NONCE; k++) {
+		then[k].seen = c->once[once_kws[k]].seen;
+		then[k].at = c->once[once_kws[k]].at;
+		c->once[once_kws[k]].seen = before[k].seen;
+		c->once[once_kws[k]].at = before[k].at;
+	}
+	check_body(c, &s->u.cond_stmt.other, "an if");
+	for (size_t k = 0; k < NONCE; k++)
+		if (then[k].seen && !c->once[once_kws[k]].seen) {
+			c->once[once_kws[k]].seen = true;
+			c->once[once_kws[k]].at = then[k].at;
+		}
+}
+
+/* A function or a macro: bound before its body, which may call it; the body is checked
+ * once, where it is defined, its parameters of types known only at each call. */
+static void check_def(struct checker *c, struct ast *s)
+{
+	struct ast *value = s->u.def.value;
+	bool macro = !value;
+	const char *name = s->u.def.name;
+	int fn = builtin_lookup(name);
+	if (fn >= 0)
+		diag_error(c->diag, s->u.def.name_span, "'%s' is a built-in %s; give yours another name", name,
+		           builtin_is_function(fn) ? "function" : "constant");
+	struct binding *b = names_bind(c, name, s->u.def.name_span, macro ? BIND_MACRO : BIND_FUNCTION, TYPE_NONE);
+	s->u.def.b = b;
+	if (b) {
+		b->def = s;
+		b->checking = true;
+	}
+	struct ast *outer_csg = c->csg, *outer_macro = c->macro;
+	unsigned outer_loops = c->csg_loops;
+	bool outer_failed = c->csg_failed;
+	c->csg = NULL; /* its statements are a CSG's members only where a call puts them */
+	c->csg_loops = 0;
+	c->macro = macro ? s : outer_macro;
+	c->def_depth++;
+	s->u.def.slot_lo = c->nslots;
+	names_push_scope(c);
+	for (size_t i = 0; i < s->u.def.params.n; i++) {
+		struct ast *p = s->u.def.params.v[i];
+		p->u.ident.ref = names_bind(c, p->u.ident.name, p->span, BIND_PARAM, TYPE_ANY);
+	}
+	if (macro) {
+		check_stmts(c, &s->u.def.body);
+	} else if (check_expr(c, value) == TYPE_PIGMENT) {
+		diag_error(c->diag, value->span, "checker(...) can only be the value of diffuse");
+	}
+	names_pop_scope(c);
+	s->u.def.slot_hi = c->nslots;
+	c->def_depth--;
+	c->macro = outer_macro;
+	c->csg = outer_csg;
+	c->csg_loops = outer_loops;
+	c->csg_failed = outer_failed;
+	if (b)
+		b->checking = false;
+}
+
+static void check_macro_call(struct checker *c, struct ast *s)
+{
+	const char *name = s->u.call.name;
+	struct binding *b = names_lookup(c, name);
+	if (b && b->kind == BIND_MACRO) {
+		check_user_call(c, s, b);
+		const struct ast *light = b->def->u.def.not_member;
+		if (light && c->csg) {
+			diag_error(c->diag, s->u.call.name_span, "'%s' makes a light, which cannot be inside %s %s", name,
+			           c->csg->u.stmt.kw == KW_INTERSECTION ? "an" : "a", kw_name(c->csg->u.stmt.kw));
+			diag_note(c->diag, light->u.stmt.kw_span, "the light is here");
+		}
+		if (light && c->macro && !c->macro->u.def.not_member)
+			c->macro->u.def.not_member = light;
+		return;
+	}
+	for (size_t i = 0; i < s->u.call.args.n; i++)
+		check_expr(c, s->u.call.args.v[i]);
+	c->tainted = true;
+	int fn = builtin_lookup(name);
+	if (b && b->kind == BIND_FUNCTION)
+		diag_error(c->diag, s->u.call.name_span, "'%s' is a function: its value goes in an expression, as in "
+		           "let v = %s(...); a statement calls a macro", name, name);
+	else if (b)
+		diag_error(c->diag, s->u.call.name_span, "'%s' is not a macro", name);
+	else if (fn >= 0 && builtin_is_function(fn))
+		diag_error(c->diag, s->u.call.name_span, "'%s' is a built-in function: its value goes in an expression",
+		           name);
+	else
+		unknown_name(c, s->u.call.name_span, name, NAMES_MACROS);
 }
 
 static void check_parts(struct checker *c, struct ast *s)
@@ -370,9 +502,8 @@ static void check_parts(struct checker *c, struct ast *s)
 	switch (s->kind) {
 	case AST_LET: {
 		enum ast_type t = check_expr(c, s->u.let.value);
-		if (t == TYPE_STR || t == TYPE_PIGMENT) {
-			diag_error(c->diag, s->u.let.value->span, "a binding holds a number or a vector, not %s",
-			           type_name(t));
+		if (t == TYPE_PIGMENT) {
+			diag_error(c->diag, s->u.let.value->span, "checker(...) can only be the value of diffuse");
 			t = TYPE_NONE;
 		}
 		s->u.let.b = names_bind(c, s->u.let.name, s->u.let.name_span, BIND_VALUE, t);
@@ -384,9 +515,18 @@ static void check_parts(struct checker *c, struct ast *s)
 		check_include(c, s);
 		c->include_failed |= !s->u.include.loaded;
 		break;
-	case AST_FOR:
-		check_value(c, s->u.loop.from, S_NUM, "the for loop's start");
-		check_value(c, s->u.loop.to, S_NUM, "the for loop's end");
+	case AST_FOR: {
+		enum ast_type var = TYPE_NUM;
+		if (s->u.loop.to) {
+			check_value(c, s->u.loop.from, S_NUM, "the for loop's start");
+			check_value(c, s->u.loop.to, S_NUM, "the for loop's end");
+		} else {
+			enum ast_type t = check_expr(c, s->u.loop.from);
+			if (t != TYPE_NONE && t != TYPE_ARRAY && t != TYPE_ANY)
+				diag_error(c->diag, s->u.loop.from->span, "a for loop runs over a range A .. B or an array, "
+				           "found %s", type_name(t));
+			var = TYPE_ANY;
+		}
 		if (c->loop_depth == LANG_MAX_NESTING) { /* includes can nest loops past one file's brackets */
 			diag_error(c->diag, s->u.loop.var_span, "for loops nested more than %d deep", LANG_MAX_NESTING);
 			break;
@@ -395,14 +535,20 @@ static void check_parts(struct checker *c, struct ast *s)
 		 * rebind its name (let i = i * 10) */
 		names_push_scope(c);
 		c->loop_depth++;
-		c->csg_loops += c->csg != NULL;
-		s->u.loop.b = names_bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, TYPE_NUM);
-		names_push_scope(c);
-		check_stmts(c, &s->u.loop.body);
-		names_pop_scope(c);
-		c->csg_loops -= c->csg != NULL;
+		s->u.loop.b = names_bind(c, s->u.loop.var, s->u.loop.var_span, BIND_LOOP, var);
+		check_body(c, &s->u.loop.body, "a for loop");
 		c->loop_depth--;
 		names_pop_scope(c);
+		break;
+	}
+	case AST_IF:
+		check_if(c, s);
+		break;
+	case AST_DEF:
+		check_def(c, s);
+		break;
+	case AST_MACRO_CALL:
+		check_macro_call(c, s);
 		break;
 	case AST_UNKNOWN_STMT:
 		unknown_statement(c, s);
@@ -424,6 +570,7 @@ static struct binding *binding_of(struct ast *s)
 	switch (s->kind) {
 	case AST_LET: return s->u.let.b;
 	case AST_FOR: return s->u.loop.b;
+	case AST_DEF: return s->u.def.b;
 	case AST_BLOCK_STMT: return s->u.stmt.kw == KW_MATERIAL ? s->u.stmt.b : NULL;
 	default: return NULL;
 	}

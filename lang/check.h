@@ -11,7 +11,7 @@
 struct arena;
 struct checker;
 
-enum binding_kind { BIND_VALUE, BIND_LOOP, BIND_MATERIAL };
+enum binding_kind { BIND_VALUE, BIND_LOOP, BIND_MATERIAL, BIND_PARAM, BIND_FUNCTION, BIND_MACRO };
 
 struct binding {
 	const char *name;
@@ -20,7 +20,10 @@ struct binding {
 	enum ast_type type;        /* of a value binding */
 	unsigned slot;             /* where eval.c keeps its current value */
 	unsigned scope;
+	struct ast *def;           /* a function's or a macro's definition */
 	bool used;
+	bool checking;             /* a definition whose body is being checked: a call there is
+	                            * recursion, which does not count as a use */
 	bool failed;               /* its definition had an error (ast.failed): what uses it is skipped */
 	struct binding *shadowed;  /* the outer binding of the same name that this one hides */
 	struct binding *scope_next;

@@ -109,9 +109,10 @@ const char *item_name(const struct ast *item)
 void check_value(struct checker *c, struct ast *e, enum shape shape, const char *attr)
 {
 	enum ast_type t = check_expr(c, e);
-	if (t == TYPE_NONE)
+	if (t == TYPE_NONE || t == TYPE_ANY) /* TYPE_ANY: eval.c checks the value */
 		return;
-	if (t == TYPE_NUM || (t == TYPE_VEC && shape != S_NUM) || (t == TYPE_PIGMENT && shape == S_PIGMENT))
+	if (shape == S_STR ? t == TYPE_STR
+	                   : t == TYPE_NUM || (t == TYPE_VEC && shape != S_NUM) || (t == TYPE_PIGMENT && shape == S_PIGMENT))
 		return;
 	const char *want = shape == S_NUM ? "a number" : shape == S_STR ? "a string" : "a vector or colour";
 	if (t == TYPE_PIGMENT)
@@ -153,7 +154,7 @@ static void check_material_ref(struct checker *c, struct ast *id)
 		diag_error(c->diag, id->span, "'%s' is not a material", name);
 		return;
 	}
-	unknown_name(c, id->span, name, true);
+	unknown_name(c, id->span, name, NAMES_MATERIALS);
 }
 
 static void check_pattern(struct checker *c, struct ast *id)
@@ -206,8 +207,7 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 			return;
 		}
 		if (a->shape == S_STR) {
-			if (args->v[0]->kind != AST_STR)
-				diag_error(c->diag, args->v[0]->span, "'%s' takes a file name in quotes", name);
+			check_value(c, args->v[0], S_STR, name);
 			return;
 		}
 		if (args->v[0]->kind == AST_STR) {

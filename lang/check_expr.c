@@ -3,62 +3,58 @@
  * and every expression gets its type. */
 #include "check_internal.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "builtins.h"
 #include "suggest.h"
 
-const char *type_name(enum ast_type t)
+/* The name a statement defines (let, material, def), or NULL, and where. */
+static const char *defined_name(const struct ast *s, struct span *at)
 {
-	switch (t) {
-	case TYPE_NUM: return "a number";
-	case TYPE_VEC: return "a vector";
-	case TYPE_STR: return "a string";
-	case TYPE_PIGMENT: return "a checker pattern";
-	case TYPE_MATERIAL: return "a material";
-	default: return "nothing";
+	switch (s->kind) {
+	case AST_LET: *at = s->u.let.name_span; return s->u.let.name;
+	case AST_DEF: *at = s->u.def.name_span; return s->u.def.name;
+	case AST_BLOCK_STMT:
+		*at = s->u.stmt.name_span;
+		return s->u.stmt.kw == KW_MATERIAL ? s->u.stmt.name : NULL;
+	default: return NULL;
 	}
 }
 
-/* An operand of arithmetic must be a number or a vector. */
-static bool arithmetic(struct checker *c, struct ast *e, enum ast_type t)
-{
-	if (t == TYPE_NUM || t == TYPE_VEC)
-		return true;
-	if (t != TYPE_NONE)
-		diag_error(c->diag, e->span, "expected a number or a vector, found %s", type_name(t));
-	return false;
-}
-
-/* The let or material of that name defined after offset 'after' in the same file,
- * outside includes, or NULL: for "defined later" notes. */
+/* The definition of that name after offset 'after' in the same file, outside includes,
+ * or NULL: for "defined later" notes. */
 static const struct ast *later_definition(const struct ast_list *stmts, const char *name, uint32_t after,
                                           const struct source *src, const struct diag *d)
 {
 	for (size_t i = 0; i < stmts->n; i++) {
 		const struct ast *s = stmts->v[i];
-		const char *defined = s->kind == AST_LET ? s->u.let.name
-		                    : s->kind == AST_BLOCK_STMT && s->u.stmt.kw == KW_MATERIAL ? s->u.stmt.name : NULL;
+		struct span at;
+		const char *defined = defined_name(s, &at);
 		if (defined && strcmp(defined, name) == 0 && s->span.start > after && diag_source_at(d, s->span.start) == src)
 			return s;
-		if (s->kind == AST_FOR) {
-			const struct ast *found = later_definition(&s->u.loop.body, name, after, src, d);
-			if (found)
-				return found;
-		}
+		const struct ast *found = NULL;
+		if (s->kind == AST_FOR)
+			found = later_definition(&s->u.loop.body, name, after, src, d);
+		if (s->kind == AST_IF && !(found = later_definition(&s->u.cond_stmt.then, name, after, src, d)))
+			found = later_definition(&s->u.cond_stmt.other, name, after, src, d);
+		if (found)
+			return found;
 	}
 	return NULL;
 }
 
 /* Reports a name that means nothing here, with the most useful hint. */
-void unknown_name(struct checker *c, struct span at, const char *name, bool material)
+void unknown_name(struct checker *c, struct span at, const char *name, enum name_class what_class)
 {
+	bool material = what_class == NAMES_MATERIALS;
 	/* it may well be defined in a file that could not be read; and once the run has
 	 * stopped nothing prints, so the searches below (all names, all statements) are skipped */
 	if (c->include_failed || diag_stopped(c->diag))
 		return;
-	const char *what = material ? "material" : "name";
-	if (!material && (strcmp(name, "x") == 0 || strcmp(name, "y") == 0 || strcmp(name, "z") == 0)) {
+	const char *what = material ? "material" : what_class == NAMES_FUNCTIONS ? "function"
+	                 : what_class == NAMES_MACROS ? "macro" : "name";
+	if (what_class == NAMES_VALUES && (strcmp(name, "x") == 0 || strcmp(name, "y") == 0 || strcmp(name, "z") == 0)) {
 		diag_error(c->diag, at, "unknown name '%s' (scn has no x, y, z vectors: write <1, 0, 0>, <0, 1, 0>, <0, 0, 1>)",
 		           name);
 		return;
@@ -70,13 +66,24 @@ void unknown_name(struct checker *c, struct span at, const char *name, bool mate
 	struct suggestion s;
 	char buf[96];
 	suggest_init(&s, name);
-	names_suggest_visible(c, &s, material);
-	diag_error(c->diag, at, "unknown %s '%s'%s", what, name, suggest_text(&s, buf, sizeof buf));
+	names_suggest_visible(c, &s, what_class);
+	char pov[160];
+	const char *hint = what_class == NAMES_MACROS || what_class == NAMES_FUNCTIONS
+	                   ? suggest_pov_hint(name, pov, sizeof pov) : NULL;
+	diag_error(c->diag, at, "unknown %s '%s'%s", what, name, hint ? hint : suggest_text(&s, buf, sizeof buf));
 	const struct ast *later = c->root ? later_definition(c->root, name, at.start, diag_source_at(c->diag, at.start), c->diag)
 	                                  : NULL;
-	if (later)
-		diag_note(c->diag, later->kind == AST_LET ? later->u.let.name_span : later->u.stmt.name_span,
-		          "'%s' is defined here, after its use; a name is visible only after its definition", name);
+	struct span later_at;
+	if (later && defined_name(later, &later_at))
+		diag_note(c->diag, later_at, "'%s' is defined here, after its use; a name is visible only after its definition",
+		          name);
+}
+
+/* A definition's binding, used: a call from inside its own body is recursion, not a use. */
+static void use(struct checker *c, struct binding *b)
+{
+	b->used |= !b->checking;
+	c->tainted |= b->failed;
 }
 
 static enum ast_type check_ident(struct checker *c, struct ast *e)
@@ -84,14 +91,22 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 	const char *name = e->u.ident.name;
 	struct binding *b = names_lookup(c, name);
 	if (b) {
-		b->used = true;
+		use(c, b);
 		e->u.ident.ref = b;
-		c->tainted |= b->failed;
-		if (b->kind == BIND_MATERIAL) {
+		switch (b->kind) {
+		case BIND_MATERIAL:
 			diag_error(c->diag, e->span, "'%s' is a material, not a value", name);
 			return TYPE_NONE;
+		case BIND_FUNCTION:
+			diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
+			return TYPE_NONE;
+		case BIND_MACRO:
+			diag_error(c->diag, e->span, "'%s' is a macro: it makes objects where it is called as a statement, "
+			           "%s(...), and has no value", name, name);
+			return TYPE_NONE;
+		default:
+			return b->type;
 		}
-		return b->kind == BIND_LOOP ? TYPE_NUM : b->type;
 	}
 	int fn = builtin_lookup(name);
 	if (fn >= CONST_PI) {
@@ -102,48 +117,80 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 		diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
 		return TYPE_NONE;
 	}
-	unknown_name(c, e->span, name, false);
+	unknown_name(c, e->span, name, NAMES_VALUES);
 	c->tainted = true; /* also when unknown_name says nothing (a name an unread include may define) */
 	return TYPE_NONE;
+}
+
+/* The number of arguments against a definition's parameters. */
+static bool arg_count(struct checker *c, struct ast *call, const char *name, int lo, int hi)
+{
+	int n = (int)call->u.call.args.n;
+	if (n >= lo && (hi < 0 || n <= hi))
+		return true;
+	if (lo == hi)
+		diag_error(c->diag, call->span, "%s takes %d argument%s, not %d", name, lo, lo == 1 ? "" : "s", n);
+	else
+		diag_error(c->diag, call->span, "%s takes at least %d arguments, not %d", name, lo, n);
+	return false;
+}
+
+/* A value handed to a function or a macro: anything a binding may hold. */
+static bool check_argument(struct checker *c, struct ast *e)
+{
+	enum ast_type t = check_expr(c, e);
+	if (t == TYPE_PIGMENT) {
+		diag_error(c->diag, e->span, "checker(...) can only be the value of diffuse");
+		return false;
+	}
+	return t != TYPE_NONE;
+}
+
+void check_user_call(struct checker *c, struct ast *call, struct binding *b)
+{
+	use(c, b);
+	call->u.call.ref = b;
+	int nparams = (int)b->def->u.def.params.n;
+	bool ok = arg_count(c, call, call->u.call.name, nparams, nparams);
+	for (size_t i = 0; i < call->u.call.args.n; i++)
+		ok &= check_argument(c, call->u.call.args.v[i]);
+	if (!ok)
+		c->tainted = true;
 }
 
 static enum ast_type check_call(struct checker *c, struct ast *e)
 {
 	const char *name = e->u.call.name;
 	struct ast_list *args = &e->u.call.args;
-	int fn = builtin_lookup(name);
+	struct binding *b = names_lookup(c, name);
+	if (b && b->kind == BIND_FUNCTION) {
+		check_user_call(c, e, b);
+		return TYPE_ANY;
+	}
+	int fn = b ? -1 : builtin_lookup(name);
 	if (fn < 0 || !builtin_is_function(fn)) {
-		struct suggestion s;
-		char buf[96];
-		suggest_init(&s, name);
-		for (int b = 0; b < BUILTIN_COUNT; b++)
-			if (builtin_is_function(b))
-				suggest_consider(&s, builtin_name(b));
-		if (names_lookup(c, name) || fn >= 0)
+		if (b && b->kind == BIND_MACRO)
+			diag_error(c->diag, e->u.call.name_span, "'%s' is a macro: call it as a statement; it has no value", name);
+		else if (b || fn >= 0)
 			diag_error(c->diag, e->u.call.name_span, "'%s' is not a function", name);
 		else
-			diag_error(c->diag, e->u.call.name_span, "unknown function '%s'%s", name,
-			           suggest_text(&s, buf, sizeof buf));
+			unknown_name(c, e->u.call.name_span, name, NAMES_FUNCTIONS);
 		for (size_t i = 0; i < args->n; i++)
 			check_expr(c, args->v[i]);
+		c->tainted = true;
 		return TYPE_NONE;
 	}
 	e->u.call.fn = fn;
-	int lo = builtin_min_args(fn), hi = builtin_max_args(fn);
-	int n = (int)args->n;
-	if (n < lo || (hi >= 0 && n > hi)) {
-		if (lo == hi)
-			diag_error(c->diag, e->span, "%s takes %d argument%s, not %d", name, lo, lo == 1 ? "" : "s", n);
-		else
-			diag_error(c->diag, e->span, "%s takes at least %d arguments, not %d", name, lo, n);
+	if (!arg_count(c, e, name, builtin_min_args(fn), builtin_max_args(fn)))
 		return TYPE_NONE;
-	}
+	int n = (int)args->n;
 	enum ast_type types[64];
 	bool ok = true;
 	for (int i = 0; i < n; i++) {
 		enum ast_type t = check_expr(c, args->v[i]);
-		ok &= arithmetic(c, args->v[i], t);
-		if (i < 64 || t == TYPE_VEC) /* min, max: the last slot is a vector if any later one is */
+		ok &= t != TYPE_NONE;
+		/* min, max: the last slot is the most telling of the arguments past it */
+		if (i < 64 || t == TYPE_VEC || (t != TYPE_NUM && t != TYPE_ANY))
 			types[i < 64 ? i : 63] = t;
 	}
 	if (!ok)
@@ -156,13 +203,23 @@ static enum ast_type check_call(struct checker *c, struct ast *e)
 	return t;
 }
 
+/* The message of a value rule (value.h) at its place. */
+static enum ast_type reported(struct checker *c, struct span at, const char *why)
+{
+	diag_error(c->diag, at, "%s", why);
+	return TYPE_NONE;
+}
+
 static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 {
+	char why[160];
 	switch (e->kind) {
 	case AST_NUM:
 		return TYPE_NUM;
 	case AST_STR:
 		return TYPE_STR;
+	case AST_BOOL:
+		return TYPE_BOOL;
 	case AST_ERROR:                /* a syntax error, reported where it is */
 		c->tainted = true;
 		return TYPE_NONE;
@@ -174,7 +231,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 			enum ast_type t = check_expr(c, e->u.vec[k]);
 			if (t == TYPE_NONE)
 				ok = false;
-			else if (t != TYPE_NUM) {
+			else if (t != TYPE_NUM && t != TYPE_ANY) {
 				diag_error(c->diag, e->u.vec[k]->span, "a vector's components must be numbers, found %s",
 				           type_name(t));
 				ok = false;
@@ -182,18 +239,56 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		}
 		return ok ? TYPE_VEC : TYPE_NONE;
 	}
-	case AST_NEG: {
+	case AST_ARRAY: {
+		bool ok = true;
+		for (size_t i = 0; i < e->u.elems.n; i++)
+			ok &= check_argument(c, e->u.elems.v[i]);
+		return ok ? TYPE_ARRAY : TYPE_NONE;
+	}
+	case AST_NEG: case AST_NOT: {
 		enum ast_type t = check_expr(c, e->u.bin.l);
-		return arithmetic(c, e->u.bin.l, t) ? t : TYPE_NONE;
+		if (t == TYPE_NONE)
+			return TYPE_NONE;
+		t = type_unary(e->u.bin.op, t, why, sizeof why);
+		return t == TYPE_NONE ? reported(c, e->u.bin.l->span, why) : t;
 	}
 	case AST_BINARY: {
 		enum ast_type l = check_expr(c, e->u.bin.l);
 		enum ast_type r = check_expr(c, e->u.bin.r);
-		bool ok = arithmetic(c, e->u.bin.l, l);
-		ok &= arithmetic(c, e->u.bin.r, r);
-		if (!ok)
+		if (l == TYPE_NONE || r == TYPE_NONE)
 			return TYPE_NONE;
-		return l == TYPE_VEC || r == TYPE_VEC ? TYPE_VEC : TYPE_NUM;
+		enum blame blame;
+		enum ast_type t = type_binary(e->u.bin.op, l, r, why, sizeof why, &blame);
+		if (t == TYPE_NONE)
+			reported(c, blame == BLAME_LEFT ? e->u.bin.l->span : blame == BLAME_RIGHT ? e->u.bin.r->span : e->span, why);
+		return t;
+	}
+	case AST_COND: {
+		enum ast_type t = check_expr(c, e->u.cond.c);
+		enum ast_type a = check_expr(c, e->u.cond.a);
+		enum ast_type b = check_expr(c, e->u.cond.b);
+		if (t != TYPE_NONE && !type_condition(t, why, sizeof why))
+			return reported(c, e->u.cond.c->span, why);
+		if (t == TYPE_NONE || a == TYPE_NONE || b == TYPE_NONE)
+			return TYPE_NONE;
+		if (a == TYPE_PIGMENT || b == TYPE_PIGMENT)
+			return reported(c, (a == TYPE_PIGMENT ? e->u.cond.a : e->u.cond.b)->span,
+			                "checker(...) can only be the value of diffuse");
+		return a == b ? a : TYPE_ANY;
+	}
+	case AST_INDEX: {
+		enum ast_type t = check_expr(c, e->u.bin.l);
+		enum ast_type i = check_expr(c, e->u.bin.r);
+		if (t != TYPE_NONE && t != TYPE_ARRAY && t != TYPE_ANY) {
+			snprintf(why, sizeof why, "only an array can be indexed, found %s%s", type_name(t),
+			         t == TYPE_VEC ? " (a vector's components are .x, .y and .z)" : "");
+			return reported(c, e->u.bin.l->span, why);
+		}
+		if (i != TYPE_NONE && i != TYPE_NUM && i != TYPE_ANY) {
+			snprintf(why, sizeof why, "an index must be a number, found %s", type_name(i));
+			return reported(c, e->u.bin.r->span, why);
+		}
+		return t == TYPE_NONE || i == TYPE_NONE ? TYPE_NONE : TYPE_ANY;
 	}
 	case AST_MEMBER: {
 		enum ast_type t = check_expr(c, e->u.member.e);
@@ -206,7 +301,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		e->u.member.comp = comp;
 		if (t == TYPE_NONE)
 			return TYPE_NONE;
-		if (t != TYPE_VEC) {
+		if (t != TYPE_VEC && t != TYPE_ANY) {
 			diag_error(c->diag, e->u.member.e->span, "'.%s' selects from a vector, but this is %s", name,
 			           type_name(t));
 			return TYPE_NONE;

@@ -13,6 +13,7 @@
 #include "keywords.h"
 #include "lang.h"
 #include "suggest.h"
+#include "value.h"
 
 struct name_entry {
 	const char *name;
@@ -30,6 +31,8 @@ struct checker {
 	struct binding *scope_bindings[2 * LANG_MAX_NESTING + 2]; /* a loop opens two */
 	unsigned nslots;
 	unsigned loop_depth;
+	unsigned def_depth;        /* definitions whose bodies are being checked */
+	struct ast *macro;         /* the innermost macro being defined, or NULL */
 	int include_depth;
 	unsigned nincludes;        /* files read by includes so far, against LANG_MAX_INCLUDES */
 	char *include_stack[LANG_MAX_INCLUDE_DEPTH + 1]; /* real paths of the files being read */
@@ -48,6 +51,7 @@ struct checker {
 	 * without that member, it would be another shape) */
 	struct ast *csg;
 	unsigned csg_loops;
+	const char *csg_body;      /* "a for loop" or "an if": the innermost of them, for messages */
 	bool csg_failed;
 };
 
@@ -85,8 +89,11 @@ void check_inverse(struct checker *c, const struct ast *s, const struct ast *inv
 
 /* The innermost binding of name, or NULL. */
 struct binding *names_lookup(struct checker *c, const char *name);
-/* Offers s every visible name: materials, or values and loop variables. */
-void names_suggest_visible(struct checker *c, struct suggestion *s, bool materials);
+/* What a name may stand for where it is used, for "did you mean". */
+enum name_class { NAMES_VALUES, NAMES_MATERIALS, NAMES_FUNCTIONS, NAMES_MACROS };
+enum name_class names_class(enum binding_kind kind);
+/* Offers s every visible name of that class, the built-in ones with the scene's. */
+void names_suggest_visible(struct checker *c, struct suggestion *s, enum name_class what);
 /* A scope opens; one closes, warning about what it bound and never used. */
 void names_push_scope(struct checker *c);
 void names_pop_scope(struct checker *c);
@@ -96,11 +103,13 @@ struct binding *names_bind(struct checker *c, const char *name, struct span sp, 
 
 /* ---- check_expr.c ---- */
 
-const char *type_name(enum ast_type t);
-/* Reports an unknown name at `at`, with a suggestion or a note on a later definition. */
-void unknown_name(struct checker *c, struct span at, const char *name, bool material);
+/* Reports an unknown name of that class at `at`, with a suggestion or a note on a later
+ * definition. */
+void unknown_name(struct checker *c, struct span at, const char *name, enum name_class what);
 /* Checks e and annotates it with its type. */
 enum ast_type check_expr(struct checker *c, struct ast *e);
+/* Checks a call (an expression's or a statement's) of the function or macro b. */
+void check_user_call(struct checker *c, struct ast *call, struct binding *b);
 
 /* ---- check_block.c ---- */
 

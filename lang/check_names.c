@@ -61,17 +61,36 @@ struct binding *names_lookup(struct checker *c, const char *name)
 	return e ? e->top : NULL;
 }
 
-/* Visible names of the given kind (values include loop variables and pi, but not the
- * functions: a name used as a value should not be told to become one). */
-void names_suggest_visible(struct checker *c, struct suggestion *s, bool materials)
+void names_suggest_visible(struct checker *c, struct suggestion *s, enum name_class what)
 {
 	for (size_t i = 0; i < c->nbuckets; i++)
 		for (struct name_entry *e = c->buckets[i]; e; e = e->next)
-			if (e->top && (e->top->kind == BIND_MATERIAL) == materials)
+			if (e->top && names_class(e->top->kind) == what)
 				suggest_consider(s, e->name);
-	if (!materials)
-		for (int k = CONST_PI; k < BUILTIN_COUNT; k++)
+	for (int k = 0; k < BUILTIN_COUNT; k++)
+		if ((what == NAMES_VALUES && !builtin_is_function(k)) || (what == NAMES_FUNCTIONS && builtin_is_function(k)))
 			suggest_consider(s, builtin_name(k));
+}
+
+enum name_class names_class(enum binding_kind kind)
+{
+	switch (kind) {
+	case BIND_MATERIAL: return NAMES_MATERIALS;
+	case BIND_FUNCTION: return NAMES_FUNCTIONS;
+	case BIND_MACRO: return NAMES_MACROS;
+	default: return NAMES_VALUES;
+	}
+}
+
+/* "'x' is never used", with what x is when that is not a value. */
+static const char *unused_format(enum binding_kind kind)
+{
+	switch (kind) {
+	case BIND_MATERIAL: return "material '%s' is never used";
+	case BIND_FUNCTION: return "function '%s' is never used";
+	case BIND_MACRO: return "macro '%s' is never used";
+	default: return "'%s' is never used";
+	}
 }
 
 void names_push_scope(struct checker *c)
@@ -93,9 +112,9 @@ void names_pop_scope(struct checker *c)
 	}
 	for (struct binding *b = oldest; b; b = b->scope_next) {
 		/* nor for what an included file defines: a library need not use all it offers */
-		if (!b->used && b->kind != BIND_LOOP && c->diag->errors == 0 && !diag_source_at(c->diag, b->span.start)->included)
-			diag_warning(c->diag, b->span, b->kind == BIND_MATERIAL ? "material '%s' is never used"
-			                                                         : "'%s' is never used", b->name);
+		if (!b->used && b->kind != BIND_LOOP && b->kind != BIND_PARAM && c->diag->errors == 0 &&
+		    !diag_source_at(c->diag, b->span.start)->included)
+			diag_warning(c->diag, b->span, unused_format(b->kind), b->name);
 		b->entry->top = b->shadowed;
 	}
 	c->scope--;

@@ -104,9 +104,8 @@ static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source
 		case KW_ZENITH: k->kind = SKY_GRADIENT; vec_of(ev, arg0(it), k->color); break;
 		case KW_HORIZON: k->kind = SKY_GRADIENT; vec_of(ev, arg0(it), k->horizon); break;
 		case KW_IMAGE:
-			k->kind = SKY_IMAGE;
-			k->image = xstrdup(arg0(it)->u.str.text);
-			k->image_path = file_resolve(src->dir, k->image);
+			if (file_of(ev, arg0(it), src, "skybox image", &k->image, &k->image_path))
+				k->kind = SKY_IMAGE;
 			break;
 		case KW_ROTATE: num_of(ev, arg0(it), &k->rotate); break;
 		case KW_INTENSITY: num_of(ev, arg0(it), &k->intensity); break;
@@ -163,7 +162,6 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 	}
 }
 
-static void eval_stmts(struct evaluator *ev, struct ast_list *stmts);
 
 /* Too many errors, or a limit on the whole evaluation reached: nothing more runs. */
 static bool stopped(const struct evaluator *ev)
@@ -171,34 +169,74 @@ static bool stopped(const struct evaluator *ev)
 	return diag_stopped(ev->diag) || ev->exhausted;
 }
 
+/* Takes n more loop iterations from the limit on all of them; false (reported at s,
+ * sp) past it. */
+static bool more_iterations(struct evaluator *ev, struct ast *s, struct span sp, double n)
+{
+	if (ev->iterations > LANG_MAX_ITERATIONS) { /* the limit was hit: no loop runs any more */
+		ev->failures++;
+		return false;
+	}
+	if (n > (double)(LANG_MAX_ITERATIONS - ev->iterations)) {
+		eval_error_span(ev, s, sp, "the for loops would run more than %d iterations in all", LANG_MAX_ITERATIONS);
+		/* once: the enclosing loops' later runs would only say it again, elsewhere */
+		ev->iterations = (uint64_t)LANG_MAX_ITERATIONS + 1;
+		return false;
+	}
+	ev->iterations += (uint64_t)n;
+	return true;
+}
+
+/* One iteration: the variable bound to var, the body run, and what the body made on the
+ * heap released (its bindings end with it). */
+static void iterate(struct evaluator *ev, struct ast *s, const struct value *var)
+{
+	unsigned slot = s->u.loop.b->slot;
+	struct heap_mark mark = heap_mark(ev);
+	ev->context[ev->ncontext - 1].var = *var;
+	ev->slots[slot] = *var;
+	ev->bad[slot] = false;
+	eval_stmts(ev, &s->u.loop.body);
+	heap_release(ev, mark);
+}
+
 static void eval_for(struct evaluator *ev, struct ast *s)
 {
+	if (!s->u.loop.to) { /* for x in an array */
+		struct value a;
+		if (!eval_expr(ev, s->u.loop.from, &a))
+			return;
+		if (a.type != TYPE_ARRAY) {
+			eval_error(ev, s->u.loop.from, "a for loop runs over a range A .. B or an array, found %s",
+			           type_name(a.type));
+			return;
+		}
+		if (!more_iterations(ev, s, s->u.loop.from->span, a.len))
+			return;
+		context_push(ev, s, NULL);
+		for (uint32_t i = 0; i < a.len && !stopped(ev); i++)
+			iterate(ev, s, &a.elems[i]);
+		context_pop(ev);
+		return;
+	}
 	double from, to;
 	if (!whole_of(ev, s->u.loop.from, -9007199254740992.0, 9007199254740992.0, "a for loop's start", &from) ||
 	    !whole_of(ev, s->u.loop.to, -9007199254740992.0, 9007199254740992.0, "a for loop's end", &to))
 		return;
-	if (ev->iterations > LANG_MAX_ITERATIONS) { /* the limit was hit: no loop runs any more */
-		ev->failures++;
+	if (!more_iterations(ev, s, diag_span_join(s->u.loop.from->span, s->u.loop.to->span), to > from ? to - from : 0))
 		return;
-	}
-	double n = to > from ? to - from : 0;
-	if (n > (double)(LANG_MAX_ITERATIONS - ev->iterations)) {
-		eval_error_span(ev, s, diag_span_join(s->u.loop.from->span, s->u.loop.to->span),
-		                "the for loops would run more than %d iterations in all", LANG_MAX_ITERATIONS);
-		/* once: the enclosing loops' later runs would only say it again, elsewhere */
-		ev->iterations = (uint64_t)LANG_MAX_ITERATIONS + 1;
-		return;
-	}
-	ev->iterations += (uint64_t)n;
-	unsigned slot = s->u.loop.b->slot;
-	ev->loops[ev->nloops].loop = s;
-	ev->nloops++;
-	for (double i = from; i < to && !stopped(ev); i++) {
-		ev->loops[ev->nloops - 1].i = i;
-		ev->slots[slot].v[0] = i;
-		eval_stmts(ev, &s->u.loop.body);
-	}
-	ev->nloops--;
+	context_push(ev, s, NULL);
+	struct value i = { .type = TYPE_NUM };
+	for (i.v[0] = from; i.v[0] < to && !stopped(ev); i.v[0]++)
+		iterate(ev, s, &i);
+	context_pop(ev);
+}
+
+static void eval_if(struct evaluator *ev, struct ast *s)
+{
+	bool c;
+	if (truth_of(ev, s->u.cond_stmt.cond, &c))
+		eval_stmts(ev, c ? &s->u.cond_stmt.then : &s->u.cond_stmt.other);
 }
 
 /* A CSG: its slot and items, then its members, which take what it hands down. */
@@ -219,14 +257,32 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 	case AST_LET: {
 		unsigned slot = s->u.let.b->slot;
 		ev->bad[slot] = !eval_expr(ev, s->u.let.value, &ev->slots[slot]);
+		return;
+	}
+	case AST_INCLUDE: /* its bindings last beyond it */
+		eval_stmts(ev, &s->u.include.body);
+		return;
+	default:
 		break;
 	}
-	case AST_INCLUDE:
-		eval_stmts(ev, &s->u.include.body);
-		break;
+	/* the other statements bind nothing beyond themselves: what they put on the heap
+	 * is released after them */
+	struct heap_mark mark = heap_mark(ev);
+	switch (s->kind) {
 	case AST_FOR:
 		eval_for(ev, s);
 		break;
+	case AST_IF:
+		eval_if(ev, s);
+		break;
+	case AST_MACRO_CALL: {
+		struct call call;
+		if (call_enter(ev, s, &call)) {
+			eval_stmts(ev, &s->u.call.ref->def->u.def.body);
+			call_end(ev, &call);
+		}
+		break;
+	}
 	case AST_BLOCK_STMT: {
 		const struct source *src = diag_source_at(ev->diag, s->span.start);
 		double depth;
@@ -240,8 +296,8 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 				ev->out->max_depth = (int)depth;
 			break;
 		case KW_MATERIAL:
-			ev->slots[s->u.stmt.b->slot].v[0] =
-				eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span);
+			ev->slots[s->u.stmt.b->slot] = (struct value){
+				.type = TYPE_NUM, .v = { eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span) } };
 			break;
 		default:
 			if (kw_is_csg(s->u.stmt.kw))
@@ -255,9 +311,10 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 	default:
 		break;
 	}
+	heap_release(ev, mark);
 }
 
-static void eval_stmts(struct evaluator *ev, struct ast_list *stmts)
+void eval_stmts(struct evaluator *ev, struct ast_list *stmts)
 {
 	for (size_t i = 0; i < stmts->n && !stopped(ev); i++)
 		eval_stmt(ev, stmts->v[i]);
@@ -268,6 +325,8 @@ struct evaluator *eval_new(struct diag *d, struct scene_desc *out)
 	struct evaluator *ev = xcalloc(1, sizeof *ev);
 	ev->diag = d;
 	ev->out = out;
+	ev->heap = arena_new();
+	ev->heap_now = arena_mark(ev->heap);
 	return ev;
 }
 
@@ -294,6 +353,10 @@ void eval_free(struct evaluator *ev)
 {
 	free(ev->slots);
 	free(ev->bad);
+	free(ev->saved);
+	free(ev->saved_bad);
+	free(ev->context);
+	arena_free(ev->heap);
 	free(ev);
 }
 

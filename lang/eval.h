@@ -14,6 +14,10 @@
  * and the objects of its body; these bound the whole evaluation. */
 #define LANG_MAX_OBJECTS 10000000
 #define LANG_MAX_STEPS 500000000
+/* LANGUAGE.md section 10: calls nest at most this deep; the arrays and strings alive at
+ * once hold at most this many elements (a string's bytes count as elements). */
+#define LANG_MAX_CALL_DEPTH 256
+#define LANG_MAX_ELEMENTS 10000000
 
 /* Evaluates statements that check_file accepted without errors (nslots is what it
  * returned) into out, which scene_desc_init prepared. Range errors go to d. */

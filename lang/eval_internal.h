@@ -1,7 +1,9 @@
 /* eval_internal.h: what the evaluator's files share, and nothing outside them uses: the
- * evaluator's state and the calls between eval.c (statements, loops, the entry points),
- * eval_object.c (objects, CSGs, materials, transforms) and eval_expr.c (expressions and
- * the values of items), each of which calls only those after it. */
+ * evaluator's state and the calls between eval.c (statements, loops, macro calls, the
+ * entry points), eval_object.c (objects, CSGs, materials, transforms), eval_expr.c
+ * (expressions, function calls, the values of items), eval_call.c (the bindings of a
+ * call) and eval_report.c (errors and their notes), each of which calls only those
+ * after it. */
 #ifndef SCN_EVAL_INTERNAL_H
 #define SCN_EVAL_INTERNAL_H
 
@@ -9,9 +11,13 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "arena.h"
 #include "ast.h"
 #include "builtins.h"
 #include "eval.h"
+#include "value.h"
+
+struct call;
 
 /* A CSG whose members are being evaluated: what they take from it. */
 struct csg_frame {
@@ -23,22 +29,52 @@ struct csg_frame {
 	struct csg_frame *outer;
 };
 
+/* What led to the statement being evaluated, for the notes of its errors: a for loop
+ * (node, with its variable's value) or a call (node). */
+struct context {
+	const struct ast *node;
+	struct value var;
+};
+
+/* The values' memory at a moment, to go back to (heap_mark, heap_release). */
+struct heap_mark {
+	struct arena_mark arena;
+	uint64_t elements;
+};
+
 struct evaluator {
 	struct diag *diag;
 	struct scene_desc *out;
 	struct value *slots;       /* current value of each binding; a material's is its index */
 	bool *bad;                 /* the binding's value could not be computed */
 	size_t nslots, cap_slots, cap_bad;
+	/* the strings and arrays that values point to, released at the end of each statement
+	 * and loop iteration that binds nothing beyond itself; their elements (a string's
+	 * bytes count as elements) against LANG_MAX_ELEMENTS */
+	struct arena *heap;
+	uint64_t elements;
+	struct arena_mark heap_now;  /* the heap's state: marked often, changed seldom */
+	/* the values of the running calls' bindings that a call of the same definition hid */
+	struct value *saved;
+	bool *saved_bad;
+	size_t nsaved, cap_saved, cap_saved_bad;
+	unsigned calls;            /* calls running, against LANG_MAX_CALL_DEPTH */
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
 	/* values that could not be computed, each time (eval_error and the use of a bad
 	 * binding), reported or not: a CSG that misses a member is dropped, not cut short */
 	uint64_t failures;
 	bool exhausted;            /* a limit on the whole evaluation was reached: stop */
-	unsigned nloops;
-	struct { const struct ast *loop; double i; } loops[LANG_MAX_NESTING];
+	struct context *context;   /* innermost last */
+	size_t ncontext, cap_context;
 	struct csg_frame *csg;     /* the innermost CSG being evaluated, or NULL */
 };
+
+/* ---- eval.c ---- */
+
+/* Runs statements in order, each skipped when check.c failed it, until the evaluation
+ * stops. */
+void eval_stmts(struct evaluator *ev, struct ast_list *stmts);
 
 /* ---- eval_object.c ---- */
 
@@ -56,21 +92,58 @@ void csg_end(struct evaluator *ev, struct ast *s);
 
 /* ---- eval_expr.c ---- */
 
+/* Evaluates a call's arguments (site: an AST_CALL or AST_MACRO_CALL of the scene's
+ * definition) and begins the call (call_begin); false after an error. The caller runs
+ * the body, then call_end. */
+bool call_enter(struct evaluator *ev, struct ast *site, struct call *call);
+
+/* The heap's state, and a return to it: what was allocated since is released. */
+static inline struct heap_mark heap_mark(const struct evaluator *ev)
+{
+	return (struct heap_mark){ ev->heap_now, ev->elements };
+}
+void heap_release(struct evaluator *ev, struct heap_mark m);
+
+/* The value of e; false after an error. */
+bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out);
+/* e as a vector (a number promoted), as a number, as a string, as a boolean, as a whole
+ * number in [lo, hi] (what names it in the message); false after an error. */
+bool vec_of(struct evaluator *ev, struct ast *e, double out[3]);
+bool num_of(struct evaluator *ev, struct ast *e, double *out);
+bool str_of(struct evaluator *ev, struct ast *e, const char **out);
+bool truth_of(struct evaluator *ev, struct ast *e, bool *out);
+/* A file's name, e's string, and its path from src's folder (both malloc'd); false after
+ * an error. A name that check.c could not see (not written as a literal) is checked for
+ * reading here, with what the file is for in the message. */
+bool file_of(struct evaluator *ev, struct ast *e, const struct source *src, const char *what, char **name,
+             char **path);
+bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const char *what, double *out);
+
+/* ---- eval_call.c ---- */
+
+/* A running call of a definition of the scene's. */
+struct call {
+	struct ast *def;
+	bool recursive;            /* another call of def ran when it began */
+};
+/* Binds def's parameters (site is the call) to args, saving what a running call of it
+ * had there; false (reported) when calls nest too deep. */
+bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args, struct call *call);
+void call_end(struct evaluator *ev, const struct call *call);
+
+/* ---- eval_report.c ---- */
+
 /* A number for a message, in buf. */
 const char *num_text(double x, char buf[32]);
 /* Reports an error at node at (at span sp), once per place however many loop iterations
- * reach it, with the loop variables' values that led there. */
+ * and calls reach it, with notes on the loops' values and the calls that led there. */
 void eval_error(struct evaluator *ev, struct ast *at, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 void eval_error_span(struct evaluator *ev, struct ast *at, struct span sp, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)));
-/* The value of e; false after an error. */
-bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out);
-/* e as a vector (a number promoted), as a number, as a whole number in [lo, hi] (what
- * names it in the message); false after an error. */
-bool vec_of(struct evaluator *ev, struct ast *e, double out[3]);
-bool num_of(struct evaluator *ev, struct ast *e, double *out);
-bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const char *what, double *out);
+/* Enters a loop or a call into the context of the notes; leaves it. */
+void context_push(struct evaluator *ev, const struct ast *node, const struct value *var);
+void context_pop(struct evaluator *ev);
 
 static inline struct ast *arg0(struct ast *item)
 {

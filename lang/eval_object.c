@@ -221,8 +221,7 @@ static bool mesh_values(struct evaluator *ev, struct ast *s, struct object_desc 
 	bool ok = true;
 	obj->kind = OBJ_MESH;
 	if (args->n) {
-		m.file = xstrdup(args->v[0]->u.str.text);
-		m.path = file_resolve(src->dir, m.file);
+		ok = file_of(ev, args->v[0], src, "mesh file", &m.file, &m.path);
 		m.file_span = args->v[0]->span;
 	} else {
 		ok = eval_mesh_lists(ev, s, &m);

@@ -72,3 +72,26 @@ char *file_resolve(const char *dir, const char *path)
 	memcpy(out + ld + 1, path, lp + 1);
 	return out;
 }
+
+const char *file_not_regular(const char *path)
+{
+	struct stat st;
+	if (stat(path, &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)))
+		return "a pipe or a socket, not a file";
+	return NULL;
+}
+
+const char *file_unreadable(const char *path)
+{
+	const char *why = file_not_regular(path);
+	if (why)
+		return why;
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return strerror(errno);
+	/* opening a directory succeeds; reading it does not */
+	char byte;
+	int err = fread(&byte, 1, 1, f) == 0 && ferror(f) ? (errno ? errno : EIO) : 0;
+	fclose(f);
+	return err ? strerror(err) : NULL;
+}

@@ -12,6 +12,8 @@ static const char *const names[KW_COUNT_ALL] = {
 	"plane", "triangle", "mesh", "skybox", "samples", "max_depth",
 	"box", "cylinder", "cone", "disc", "torus",
 	"union", "merge", "intersection", "difference",
+	"if", "else", "def",
+	"and", "or", "not", "true", "false",
 	"location", "look_at", "up", "fov", "resolution", "position", "direction",
 	"color", "intensity", "shadowless", "like", "diffuse", "specular", "shininess",
 	"reflect", "transmit", "ior", "fresnel", "emit", "translate", "rotate", "scale",

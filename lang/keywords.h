@@ -1,4 +1,4 @@
-/* keywords.h: the reserved words of the scene language (LANGUAGE.md sections 2, 5 and 9). */
+/* keywords.h: the reserved words of the scene language (LANGUAGE.md sections 2, 5, 9 and 10). */
 #ifndef SCN_KEYWORDS_H
 #define SCN_KEYWORDS_H
 
@@ -11,6 +11,9 @@ enum kw {
 	KW_PLANE, KW_TRIANGLE, KW_MESH, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH,
 	KW_BOX, KW_CYLINDER, KW_CONE, KW_DISC, KW_TORUS,
 	KW_UNION, KW_MERGE, KW_INTERSECTION, KW_DIFFERENCE,   /* ORDER CSG: as enum csg_op */
+	KW_IF, KW_ELSE, KW_DEF,
+	/* operators and constants */
+	KW_AND, KW_OR, KW_NOT, KW_TRUE, KW_FALSE,
 	/* attributes */
 	KW_LOCATION, KW_LOOK_AT, KW_UP, KW_FOV, KW_RESOLUTION, KW_POSITION, KW_DIRECTION,
 	KW_COLOR, KW_INTENSITY, KW_SHADOWLESS, KW_LIKE, KW_DIFFUSE, KW_SPECULAR, KW_SHININESS,
@@ -24,6 +27,12 @@ enum kw {
 static inline bool kw_is_object(int k)
 {
 	return k == KW_SPHERE || k == KW_PLANE || k == KW_TRIANGLE || k == KW_MESH || (k >= KW_BOX && k <= KW_DIFFERENCE);
+}
+
+/* The attributes that take no value. */
+static inline bool kw_is_flag(int k)
+{
+	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE;
 }
 
 static inline bool kw_is_csg(int k)

@@ -26,7 +26,9 @@ struct lang_ctx {
 	uint32_t pos;                 /* local offset of the scanner */
 	uint32_t read_pos;            /* local offset of what YY_INPUT has handed the scanner */
 	unsigned nopen;               /* open brackets, innermost last */
-	unsigned nopen_of[3];         /* how many of them are '{', '(' and '<' */
+	unsigned nopen_of[4];         /* how many of them are '{', '(', '<' and '[' */
+	int prev;                     /* the last token scanned, or 0: whether a '<' compares */
+	int prev_kw;                  /* its keyword, or -1 */
 	struct {
 		struct span sp;
 		uint32_t indent;      /* of the line it is on */

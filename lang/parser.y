@@ -1,4 +1,4 @@
-/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5 and 9) -> AST.
+/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5, 9 and 10) -> AST.
  * Every statement starts with a keyword. Blocks are generic (positional arguments, then
  * attribute items) so that check.c, not the grammar, knows which attribute belongs where
  * and can say "unknown attribute 'radus' in sphere; did you mean 'radius'?". A CSG block
@@ -28,6 +28,8 @@ int yylex(YYSTYPE *yylval, YYLTYPE *yylloc, yyscan_t scanner);
 static struct ast *bounded(struct lang_ctx *ctx, struct ast *e);
 static struct ast *string_node(struct lang_ctx *ctx, struct span sp, char *text, size_t len);
 static struct ast *not_a_vector(struct lang_ctx *ctx, struct span sp);
+static struct ast *compare(struct lang_ctx *ctx, struct span sp, char op, struct ast *l, struct span lsp,
+                           struct ast *r, struct span rsp);
 static char *reserved(struct lang_ctx *ctx, struct span sp);
 static struct ast_list list1(struct lang_ctx *ctx, struct ast *e);
 static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct ast *e);
@@ -82,11 +84,14 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
 %token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
 %token DOTDOT "'..'"
+%token IF "'if'" ELSE "'else'" DEF "'def'" AND "'and'" OR "'or'" NOT "'not'"
+%token <num> BOOL "'true' or 'false'"
+%token EQ "'=='" NE "'!='" LT "'<' comparison" GT "'>' comparison" LE "'<='" GE "'>='"
 %token BAD "invalid character"   /* the lexer has reported it; the parser only recovers */
 
-%type <node> stmt object member expr postfix primary arg item attr_item
+%type <node> stmt object member expr vexpr postfix primary arg item attr_item if_stmt if_member def mesh_file
 %type <name> name binder
-%type <list> stmts items members args opt_args call_args
+%type <list> stmts items members args opt_args call_args params else_stmts else_members
 %type <block> items_block args_block mesh_block list_block csg_block
 
 /* An attribute followed by an identifier takes it as its value (`material glass`,
@@ -94,6 +99,12 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %precedence NAME_VALUE
 %precedence NO_ARGS
 %precedence IDENT
+%precedence '('
+%right '?' ':'
+%left OR
+%left AND
+%precedence NOT
+%left EQ NE LT GT LE GE
 %left '+' '-'
 %left '*' '/'
 %precedence NEG
@@ -114,8 +125,13 @@ stmt:
 |	INCLUDE STRING                      { $$ = $2.text ? ast_include(A, @$, $2.text, @2) : NULL; }
 |	FOR IDENT IN expr DOTDOT expr '{' stmts '}'
 	                                    { $$ = ast_for(A, @$, $2, @2, $4, $6, $8); }
+|	FOR IDENT IN expr '{' stmts '}'     { $$ = ast_for(A, @$, $2, @2, $4, NULL, $6); }
 |	FOR IDENT error '{' stmts '}'       { $$ = ast_for(A, @$, $2, @2, ast_new(A, AST_ERROR, @3),
 	                                                   ast_new(A, AST_ERROR, @3), $5); } /* still binds */
+|	if_stmt
+|	def
+|	IDENT '(' ')'                       { $$ = ast_macro_call(A, @$, $1, @1, no_list); }
+|	IDENT '(' call_args ')'             { $$ = ast_macro_call(A, @$, $1, @1, $3); }
 |	MATERIAL binder items_block         { $$ = ast_block_stmt(A, @$, $1, @1, $3, NULL);
 	                                      $$->u.stmt.name = $2; $$->u.stmt.name_span = @2; }
 |	ITEMS_KW items_block                { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
@@ -125,6 +141,26 @@ stmt:
 |	IDENT soup_block                    { $$ = ast_item(A, @$, -1, $1, @1, no_list, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	name opt_args                       { $$ = ast_item(A, @$, -1, $1, @1, $2, NULL); $$->kind = AST_UNKNOWN_STMT; }
 |	error                               { $$ = NULL; }
+;
+if_stmt:
+	IF expr '{' stmts '}' else_stmts    { $$ = ast_if(A, @$, $2, $4, $6); }
+;
+else_stmts:
+	%empty                              { $$ = no_list; }
+|	ELSE '{' stmts '}'                  { $$ = $3; }
+|	ELSE if_stmt                        { $$ = list1(ctx, $2); }
+;
+/* A definition: a function (= EXPR) or a macro ({ STATEMENTS }). */
+def:
+	DEF binder '(' params ')' '=' expr  { $$ = ast_def(A, @$, $2, @2, $4, $7, no_list); }
+|	DEF binder '(' params ')' '=' error { $$ = ast_def(A, @$, $2, @2, $4, ast_new(A, AST_ERROR, @7), no_list); }
+|	DEF binder '(' params ')' '{' stmts '}'
+	                                    { $$ = ast_def(A, @$, $2, @2, $4, NULL, $7); }
+;
+params:
+	%empty                              { $$ = no_list; }
+|	IDENT                               { $$ = list1(ctx, ast_ident(A, @1, $1)); }
+|	params ',' IDENT                    { $$ = append(ctx, $1, ast_ident(A, @3, $3)); }
 ;
 object:
 	ARGS_KW args_block                  { $$ = ast_block_stmt(A, @$, $1, @1, $2, NULL); }
@@ -149,8 +185,13 @@ member:
 |	attr_item
 |	FOR IDENT IN expr DOTDOT expr '{' members '}'
 	                                    { $$ = ast_for(A, @$, $2, @2, $4, $6, $8); }
+|	FOR IDENT IN expr '{' members '}'   { $$ = ast_for(A, @$, $2, @2, $4, NULL, $6); }
 |	FOR IDENT error '{' members '}'     { $$ = ast_for(A, @$, $2, @2, ast_new(A, AST_ERROR, @3),
 	                                                   ast_new(A, AST_ERROR, @3), $5); }
+|	if_member
+|	def
+|	IDENT '(' ')'                       { $$ = ast_macro_call(A, @$, $1, @1, no_list); }
+|	IDENT '(' call_args ')'             { $$ = ast_macro_call(A, @$, $1, @1, $3); }
 |	LET binder '=' expr                 { $$ = ast_let(A, @$, $2, @2, $4); }
 |	LET binder '=' error                { $$ = ast_let(A, @$, $2, @2, ast_new(A, AST_ERROR, @4)); }
 |	INCLUDE STRING                      { $$ = $2.text ? ast_include(A, @$, $2.text, @2) : NULL; }
@@ -166,6 +207,16 @@ member:
 |	error soup_block                    { $$ = ast_new(A, AST_ERROR, @$); } /* skipped whole: not read as members */
 ;
 
+if_member:
+	IF expr '{' members '}' else_members
+	                                    { $$ = ast_if(A, @$, $2, $4, $6); }
+;
+else_members:
+	%empty                              { $$ = no_list; }
+|	ELSE '{' members '}'                { $$ = $3; }
+|	ELSE if_member                      { $$ = list1(ctx, $2); }
+;
+
 /* Recovery: an error inside braces skips to the closing brace. */
 items_block:
 	'{' items '}'                       { $$ = ast_block(A, @1, no_list, $2); }
@@ -175,9 +226,17 @@ args_block:
 	'{' args items '}'                  { $$ = ast_block(A, @1, $2, $3); }
 |	'{' error '}'                       { $$ = ast_broken_block(A, @1); yyerrok; }
 ;
+/* A mesh's file name: a string expression that starts with a string or a bracket (a
+ * name alone reads as an attribute, which check.c takes for the file name when it names
+ * a value; a name with more goes in brackets). */
 mesh_block:
 	items_block
-|	'{' STRING items '}'                { $$ = ast_block(A, @1, list1(ctx, string_node(ctx, @2, $2.text, $2.len)), $3); }
+|	'{' mesh_file items '}'             { $$ = ast_block(A, @1, list1(ctx, $2), $3); }
+;
+mesh_file:
+	STRING                              { $$ = string_node(ctx, @1, $1.text, $1.len); }
+|	'(' expr ')'                        { $$ = $2; }
+|	mesh_file '+' expr                  { $$ = bounded(ctx, ast_binary(A, @$, '+', $1, $3)); }
 ;
 list_block:
 	'{' args '}'                        { $$ = ast_block(A, @1, $2, no_list); }
@@ -232,6 +291,7 @@ soup_token:
 	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {} | CSG_KW {}
 |	MATERIAL {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
 |	DOTDOT | BAD | POV_COLOUR | '(' | ')' | '<' | '>' | ',' | '.' | '=' | '+' | '-' | '*' | '/'
+|	IF | ELSE | DEF | AND | OR | NOT | BOOL {} | EQ | NE | LT | GT | LE | GE | '?' | ':' | '[' | ']'
 ;
 opt_args:
 	%empty %prec NO_ARGS                { $$ = no_list; }
@@ -243,30 +303,58 @@ args:
 ;
 arg:
 	expr
-|	STRING                              { $$ = string_node(ctx, @$, $1.text, $1.len); }
 ;
 
+/* Expressions (LANGUAGE.md 4 and 10). A vector's components (vexpr) are the same less the
+ * comparisons, whose '<' and '>' would be the vector's own: there they go in brackets. */
 expr:
 	expr '+' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '+', $1, $3)); }
 |	expr '-' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '-', $1, $3)); }
 |	expr '*' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '*', $1, $3)); }
 |	expr '/' expr                       { $$ = bounded(ctx, ast_binary(A, @$, '/', $1, $3)); }
 |	'-' expr %prec NEG                  { $$ = bounded(ctx, ast_neg(A, @$, $2)); }
+|	expr LT expr                        { $$ = compare(ctx, @$, OP_LT, $1, @1, $3, @3); }
+|	expr GT expr                        { $$ = compare(ctx, @$, OP_GT, $1, @1, $3, @3); }
+|	expr LE expr                        { $$ = compare(ctx, @$, OP_LE, $1, @1, $3, @3); }
+|	expr GE expr                        { $$ = compare(ctx, @$, OP_GE, $1, @1, $3, @3); }
+|	expr EQ expr                        { $$ = compare(ctx, @$, OP_EQ, $1, @1, $3, @3); }
+|	expr NE expr                        { $$ = compare(ctx, @$, OP_NE, $1, @1, $3, @3); }
+|	expr AND expr                       { $$ = bounded(ctx, ast_binary(A, @$, OP_AND, $1, $3)); }
+|	expr OR expr                        { $$ = bounded(ctx, ast_binary(A, @$, OP_OR, $1, $3)); }
+|	NOT expr                            { $$ = bounded(ctx, ast_not(A, @$, $2)); }
+|	expr '?' expr ':' expr              { $$ = bounded(ctx, ast_cond(A, @$, $1, $3, $5)); }
+|	postfix
+;
+vexpr:
+	vexpr '+' vexpr                     { $$ = bounded(ctx, ast_binary(A, @$, '+', $1, $3)); }
+|	vexpr '-' vexpr                     { $$ = bounded(ctx, ast_binary(A, @$, '-', $1, $3)); }
+|	vexpr '*' vexpr                     { $$ = bounded(ctx, ast_binary(A, @$, '*', $1, $3)); }
+|	vexpr '/' vexpr                     { $$ = bounded(ctx, ast_binary(A, @$, '/', $1, $3)); }
+|	'-' vexpr %prec NEG                 { $$ = bounded(ctx, ast_neg(A, @$, $2)); }
+|	vexpr AND vexpr                     { $$ = bounded(ctx, ast_binary(A, @$, OP_AND, $1, $3)); }
+|	vexpr OR vexpr                      { $$ = bounded(ctx, ast_binary(A, @$, OP_OR, $1, $3)); }
+|	NOT vexpr                           { $$ = bounded(ctx, ast_not(A, @$, $2)); }
+|	vexpr '?' vexpr ':' vexpr           { $$ = bounded(ctx, ast_cond(A, @$, $1, $3, $5)); }
 |	postfix
 ;
 postfix:
 	primary
 |	postfix '.' name                    { $$ = bounded(ctx, ast_member(A, @$, $1, $3, @3)); }
+|	postfix '[' expr ']'                { $$ = bounded(ctx, ast_index(A, @$, $1, $3)); }
 ;
 primary:
 	NUMBER                              { $$ = isnan($1) ? ast_new(A, AST_ERROR, @$) : ast_num(A, @$, $1); }
+|	STRING                              { $$ = string_node(ctx, @$, $1.text, $1.len); }
+|	BOOL                                { $$ = ast_bool(A, @$, $1 != 0); }
 |	name                                { $$ = ast_ident(A, @$, $1); }
 |	IDENT '(' ')'                       { $$ = ast_call(A, @$, $1, @1, no_list); }
 |	IDENT '(' call_args ')'             { $$ = bounded(ctx, ast_call(A, @$, $1, @1, $3)); }
 |	'(' expr ')'                        { $$ = $2; }
-|	'<' expr ',' expr ',' expr '>'      { $$ = bounded(ctx, ast_vec(A, @$, $2, $4, $6)); }
-|	'<' expr ',' expr '>'               { $$ = not_a_vector(ctx, @$); }
-|	'<' expr '>'                        { $$ = not_a_vector(ctx, @$); }
+|	'<' vexpr ',' vexpr ',' vexpr '>'   { $$ = bounded(ctx, ast_vec(A, @$, $2, $4, $6)); }
+|	'<' vexpr ',' vexpr '>'             { $$ = not_a_vector(ctx, @$); }
+|	'<' vexpr '>'                       { $$ = not_a_vector(ctx, @$); }
+|	'[' ']'                             { $$ = ast_array(A, @$, no_list); }
+|	'[' call_args ']'                   { $$ = bounded(ctx, ast_array(A, @$, $2)); }
 |	POV_COLOUR primary                  { $$ = $2; diag_error(ctx->diag, @1, "'%.*s' is POV-Ray's; an scn colour is a plain vector, like <1, 0.5, 0>",
 	                                      (int)(@1.end - @1.start), ctx->src->text + (@1.start - ctx->src->base)); }
 ;
@@ -290,10 +378,34 @@ static char *reserved(struct lang_ctx *ctx, struct span sp)
 	return word;
 }
 
+/* A '<' ... '>' of fewer than three components; when an operand follows its '>', most
+ * likely a comparison inside a vector closed it. */
 static struct ast *not_a_vector(struct lang_ctx *ctx, struct span sp)
 {
-	diag_error(ctx->diag, sp, "a vector has three components: <x, y, z>");
+	const char *p = ctx->src->text + (sp.end - ctx->src->base), *end = ctx->src->text + ctx->src->len;
+	while (p < end && (*p == ' ' || *p == '\t'))
+		p++;
+	bool operand = p < end && (isalnum((unsigned char)*p) || *p == '_' || *p == '(' || *p == '.');
+	diag_error(ctx->diag, sp, "a vector has three components: <x, y, z>%s",
+	           operand ? " (inside < > a comparison goes in brackets: <(a > b) ? 1 : 0, 0, 0>)" : "");
 	return ast_new(ctx->arena, AST_ERROR, sp);
+}
+
+/* A comparison. Comparisons do not chain: a < b < c would compare a boolean. An operand
+ * that is a comparison is one only when its span is the operand's whole text, which
+ * brackets around it would widen. */
+static struct ast *compare(struct lang_ctx *ctx, struct span sp, char op, struct ast *l, struct span lsp,
+                           struct ast *r, struct span rsp)
+{
+	(void)r;
+	(void)rsp;
+	bool chained = l->kind == AST_BINARY && strchr("<>lg=!", l->u.bin.op) && l->span.start == lsp.start &&
+	               l->span.end == lsp.end;
+	if (chained) {
+		diag_error(ctx->diag, sp, "comparisons do not chain: write a < b and b < c");
+		return ast_new(ctx->arena, AST_ERROR, sp);
+	}
+	return bounded(ctx, ast_binary(ctx->arena, sp, op, l, r));
 }
 
 static struct ast_list list1(struct lang_ctx *ctx, struct ast *e)
@@ -310,7 +422,7 @@ static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct as
 }
 
 /* A statement goes on the list, or, when it is the file's and they are handed on, to
- * ctx->each and is then released. Nothing the parser still holds is in the node arena
+ * ctx->each and is then released (but a definition). Nothing the parser still holds is in the node arena
  * then: the statements before it went the same way, and a lookahead token's text is in
  * the text arena. Returns false to stop the parse. */
 static bool statement(struct lang_ctx *ctx, struct ast_list *list, struct ast *stmt, bool file_level)
@@ -323,7 +435,12 @@ static bool statement(struct lang_ctx *ctx, struct ast_list *list, struct ast *s
 		return true;
 	}
 	bool go_on = ctx->each(ctx->each_arg, stmt);
-	arena_reset(ctx->arena);
+	/* a definition's tree runs at each call, to the end of the file; an include's holds
+	 * the definitions of its file */
+	if (stmt && (stmt->kind == AST_DEF || stmt->kind == AST_INCLUDE))
+		arena_keep(ctx->arena);
+	else
+		arena_reset(ctx->arena);
 	return go_on;
 }
 
@@ -351,11 +468,13 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 	case YYSYMBOL_MATERIAL: return attribute ? NULL : "'material'";
 	case YYSYMBOL_STRING: return value ? NULL : "a string"; /* a string where a value may stand is rare */
 	case YYSYMBOL_POV_COLOUR: case YYSYMBOL_BAD: return NULL;
+	case YYSYMBOL_LT: case YYSYMBOL_GT: case YYSYMBOL_LE: case YYSYMBOL_GE: case YYSYMBOL_EQ: case YYSYMBOL_NE:
+	case YYSYMBOL_AND: case YYSYMBOL_OR: case YYSYMBOL_NOT: case YYSYMBOL_BOOL: return NULL;
 	default: break;
 	}
 	const char *name = yysymbol_name(k);
 	if (strlen(name) == 3 && name[0] == '\'') {
-		if (strchr("+-*/.(<", name[1]))
+		if (strchr("+-*/.(<[?:", name[1]))
 			return NULL;
 	}
 	return name;
@@ -408,6 +527,18 @@ static void note_unclosed(struct lang_ctx *ctx, unsigned k)
 	          outer_line, inner_line);
 }
 
+/* Whether the token at `at` is an operator right after a name: name + ... where a block
+ * takes attributes, which read the name as one. */
+static bool after_name(const struct lang_ctx *ctx, struct span at)
+{
+	const char *text = ctx->src->text, *p = text + (at.start - ctx->src->base);
+	if (!strchr("+-*/[.?", *p))
+		return false;
+	while (p > text && (p[-1] == ' ' || p[-1] == '\t'))
+		p--;
+	return p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_');
+}
+
 static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struct lang_ctx *ctx)
 {
 	(void)scanner;
@@ -440,7 +571,9 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW
 	            || got == YYSYMBOL_MATERIAL
 	            || got == YYSYMBOL_MESH || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH || got == YYSYMBOL_LET
-	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN;
+	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN || got == YYSYMBOL_IF
+	            || got == YYSYMBOL_ELSE || got == YYSYMBOL_DEF || got == YYSYMBOL_AND || got == YYSYMBOL_OR
+	            || got == YYSYMBOL_NOT || got == YYSYMBOL_BOOL;
 	if (keyword && name && !value && !attribute) { /* let count = 3: a new name was wanted */
 		diag_error(ctx->diag, at, "%s is a reserved word; it cannot be a name", what);
 		return 0;
@@ -472,20 +605,29 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 	while (k > 0 && ctx->open[k - 1].sp.start >= at.start)
 		k--;
 	char hint[160] = "";
+	bool comparison = got == YYSYMBOL_LT || got == YYSYMBOL_GT || got == YYSYMBOL_LE || got == YYSYMBOL_GE ||
+	                  got == YYSYMBOL_EQ || got == YYSYMBOL_NE;
 	if (k > 0 && strcmp(yysymbol_name(got), "'<'") == 0)
 		light_position_hint(ctx, ctx->open[k - 1].sp, at, hint, sizeof hint);
+	else if (k > 0 && comparison && ctx->open[k - 1].ch == '<')
+		snprintf(hint, sizeof hint, " (inside < > a comparison goes in brackets: <(a > b) ? 1 : 0, 0, 0>)");
+	else if (k > 0 && ctx->open[k - 1].ch == '{' && attribute && after_name(ctx, at))
+		snprintf(hint, sizeof hint, " (in a block, a value that starts with a name and goes on goes in brackets: "
+		         "mesh { (name + \".obj\") })");
 	diag_error(ctx->diag, at, "unexpected %s%s%s", what, list, hint);
 
 	/* The note names that bracket when its closer was expected and what came instead
 	 * looks like what follows a missing closer: the end, a statement, another closer. */
 	const char *got_name = yysymbol_name(got);
 	bool missing = got == YYSYMBOL_YYEOF || got == YYSYMBOL_LET || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR
+	            || got == YYSYMBOL_IF || got == YYSYMBOL_DEF
 	            || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW || got == YYSYMBOL_MESH
 	            || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH
-	            || strcmp(got_name, "'}'") == 0 || strcmp(got_name, "')'") == 0 || strcmp(got_name, "'>'") == 0;
+	            || strcmp(got_name, "'}'") == 0 || strcmp(got_name, "')'") == 0 || strcmp(got_name, "'>'") == 0
+	            || strcmp(got_name, "']'") == 0;
 	if (k > 0 && missing) {
 		char open = ctx->open[k - 1].ch;
-		char closer[4] = { '\'', open == '{' ? '}' : open == '(' ? ')' : '>', '\'', '\0' };
+		char closer[4] = { '\'', open == '{' ? '}' : open == '(' ? ')' : open == '[' ? ']' : '>', '\'', '\0' };
 		for (int i = 0; i < n; i++)
 			if (strcmp(yysymbol_name(expected[i]), closer) == 0) {
 				note_unclosed(ctx, k - 1);

@@ -5,32 +5,36 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Edit distance, for "did you mean"; gives up (returns limit + 1) beyond limit. */
+/* Edit distance (with a swap of two neighbours as one edit), for "did you mean"; gives up
+ * (returns limit + 1) beyond limit. */
 static unsigned edit_distance(const char *a, const char *b, unsigned limit)
 {
 	size_t la = strlen(a), lb = strlen(b);
 	if (la > 64 || lb > 64 || (la > lb ? la - lb : lb - la) > limit)
 		return limit + 1;
-	unsigned row[65];
+	unsigned rows[3][65], *older = rows[0], *prev = rows[1], *row = rows[2];
 	for (size_t j = 0; j <= lb; j++)
-		row[j] = (unsigned)j;
+		prev[j] = (unsigned)j;
 	for (size_t i = 1; i <= la; i++) {
-		unsigned diag = row[0];
 		row[0] = (unsigned)i;
 		for (size_t j = 1; j <= lb; j++) {
-			unsigned up = row[j];
-			unsigned best = diag + (a[i - 1] != b[j - 1]);
-			if (up + 1 < best)
-				best = up + 1;
+			unsigned best = prev[j - 1] + (a[i - 1] != b[j - 1]);
+			if (prev[j] + 1 < best)
+				best = prev[j] + 1;
 			if (row[j - 1] + 1 < best)
 				best = row[j - 1] + 1;
+			/* two letters swapped ("aera" for "area") are one slip */
+			if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && older[j - 2] + 1 < best)
+				best = older[j - 2] + 1;
 			row[j] = best;
-			diag = up;
 		}
+		unsigned *t = older;
+		older = prev;
+		prev = row;
+		row = t;
 	}
-	return row[lb];
+	return prev[lb];
 }
-
 
 void suggest_init(struct suggestion *s, const char *name)
 {
@@ -84,6 +88,12 @@ static const char *const pov_words[][2] = {
 	{ "right", "scn's camera takes its aspect from resolution" },
 	{ "colour", "scn writes color" },
 	{ "object", "scn has no object statement; write the shape itself" },
+	{ "range", "a for loop over numbers is written for i in A .. B" },
+	{ "array", "scn writes an array as [A, B, C]" },
+	{ "dimension_size", "scn writes len(xs)" },
+	{ "concat", "scn joins strings with +" },
+	{ "val", "scn has no conversion of a string to a number" },
+	{ "mod", "scn writes mod(a, b)" },
 };
 
 /* Shapes POV-Ray has and scn has not. */

@@ -1,6 +1,6 @@
 /* cmd_render.c: scn render: create the output file, load, apply the command line's
  * overrides, lower, render and write the image, reporting each phase's time and the rays
- * by kind with --stats. */
+ * by kind with --stats; once, or for each frame of an animation (--frames). */
 #include "config.h"
 
 #include <math.h>
@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "accel.h"
+#include "anim.h"
 #include "cli.h"
 #include "clock.h"
 #include "diag.h"
@@ -29,11 +30,16 @@ struct render_args {
 	enum accel_kind accel;
 	bool region;
 	long x0, y0, x1, y1;
+	bool clock_given;                  /* --clock */
+	double clock;
+	bool animate, cyclic;              /* --frames, --cyclic */
+	struct anim_frames frames;
 };
 
 enum {
 	OPT_OUT, OPT_WIDTH, OPT_HEIGHT, OPT_SAMPLES, OPT_PATTERN, OPT_DEPTH, OPT_THREADS, OPT_ACCEL, OPT_REGION,
-	OPT_SEED, OPT_BIT_DEPTH, OPT_FLOAT, OPT_STATS, OPT_PROGRESS, OPT_NO_PROGRESS, OPT_QUIET, NOPTIONS
+	OPT_SEED, OPT_BIT_DEPTH, OPT_FLOAT, OPT_STATS, OPT_PROGRESS, OPT_NO_PROGRESS, OPT_QUIET, OPT_CLOCK, OPT_FRAMES,
+	OPT_CYCLIC, NOPTIONS
 };
 static const struct cli_option options[NOPTIONS] = {
 	[OPT_OUT] = { NULL, 'o', true },
@@ -52,6 +58,9 @@ static const struct cli_option options[NOPTIONS] = {
 	[OPT_PROGRESS] = { "progress", 0, false },
 	[OPT_NO_PROGRESS] = { "no-progress", 0, false },
 	[OPT_QUIET] = { NULL, 'q', false },
+	[OPT_CLOCK] = { "clock", 0, true },
+	[OPT_FRAMES] = { "frames", 0, true },
+	[OPT_CYCLIC] = { "cyclic", 0, false },
 };
 
 /* Reads the command line into *a: 0, or -1 once the help is shown, or EXIT_USAGE after a
@@ -73,6 +82,17 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 		case OPT_NO_PROGRESS: a->progress = 0; continue;
 		case OPT_QUIET: a->quiet = true; continue;
 		case OPT_OUT: a->out = v; continue;
+		case OPT_CYCLIC: a->cyclic = true; continue;
+		case OPT_CLOCK:
+			if (anim_clock_arg(self, p.name, v, &a->clock))
+				return EXIT_USAGE;
+			a->clock_given = true;
+			continue;
+		case OPT_FRAMES:
+			if (anim_frames_arg(self, p.name, v, &a->frames))
+				return EXIT_USAGE;
+			a->animate = true;
+			continue;
 		case OPT_WIDTH: target = &a->width; lo = 1; hi = 65536; break;
 		case OPT_HEIGHT: target = &a->height; lo = 1; hi = 65536; break;
 		case OPT_SAMPLES: target = &a->samples; lo = 1; hi = 65536; break;
@@ -112,7 +132,17 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 	}
 	if (o == CLI_STOP)
 		return p.status;
-	return (a->scene = cli_scene(&p)) ? 0 : EXIT_USAGE;
+	if (a->clock_given && a->animate)
+		return cli_usage_error(self, "--clock and --frames do not go together: --frames sets each frame's clock");
+	if (a->cyclic && !a->animate)
+		return cli_usage_error(self, "--cyclic needs --frames");
+	a->frames.cyclic = a->cyclic;
+	if (!(a->scene = cli_scene(&p)))
+		return EXIT_USAGE;
+	/* load_scene reads the scene anew for each frame, and standard input reads once */
+	if (a->animate && strcmp(a->scene, "-") == 0)
+		return cli_usage_error(self, "--frames reads the scene once for each frame: it cannot come from standard input");
+	return 0;
 }
 
 /* Applies the command line's overrides to the scene; a combination the language would
@@ -197,59 +227,62 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 	fprintf(stderr, "non-finite radiance values: %llu\n", (unsigned long long)st->nonfinite);
 }
 
-int cmd_render(const struct command *self, int argc, char **argv)
-{
-	struct render_args a;
-	int rc = parse_args(self, argc, argv, &a);
-	if (rc)
-		return rc < 0 ? 0 : rc;
-	char *out = a.out ? xstrdup(a.out) : cli_default_output(a.scene, ".png");
-	if (image_format_of(out) < 0) {
-		rc = cli_usage_error(self, "cannot tell the format of '%s' (use .png, .exr or .ppm)", out);
-		free(out);
-		return rc;
-	}
+/* One render and its image file: the whole of a still, or one frame of --frames. */
+struct shot {
+	const char *out;                   /* the image file */
+	struct load_frame at;              /* the moment the scene is evaluated at */
+	const char *moment;                /* "frame 3, clock 0.25" for the messages, or NULL */
+	bool drop_warnings;                /* a frame after the first: its warnings only if it fails */
+	bool tile_progress;                /* render_image's progress bar */
+	struct anim_bar *bar;              /* the bar over frames, shown while this one renders, or NULL */
+};
 
+/* Renders s: creates its file, loads the scene at its moment, applies the overrides,
+ * lowers, renders and writes. Returns the exit status, after the messages. */
+static int render_shot(const struct command *self, const struct render_args *a, const struct shot *s)
+{
 	/* the output file exists from the start, so that an unwritable place is found
 	 * before the render and not after it */
 	char err[512];
-	struct image_write_options wo = { .bit_depth = (int)a.bit_depth, .float32 = a.float32 };
+	struct image_write_options wo = { .bit_depth = (int)a->bit_depth, .float32 = a->float32 };
 	struct image_file file;
-	if (image_file_create(&file, out, &wo, err, sizeof err) != 0) {
+	if (image_file_create(&file, s->out, &wo, err, sizeof err) != 0) {
 		fprintf(stderr, "scn: %s\n", err);
-		free(out);
 		return EXIT_IO;
 	}
 	bool file_open = true;
 
 	struct diag d;
 	diag_init(&d, stderr);
+	struct diag_mark start = diag_mark(&d);
 	struct scene_desc desc;
 	struct load_times lt;
 	struct lower_times wt = { 0 };
 	struct scene sc = { 0 };
 	struct image *img = NULL;
-	struct render_options ro = { .threads = (int)a.threads };
-	rc = (int)load_scene(&d, a.scene, NULL, &desc, &lt);
+	struct render_options ro = { .threads = (int)a->threads, .progress = s->tile_progress };
+	int rc = (int)load_scene(&d, a->scene, &s->at, &desc, &lt);
 	if (rc == 0)
-		rc = override(self, &a, &desc);
+		rc = override(self, a, &desc);
 	if (rc == 0) {
 		ro.x1 = desc.camera.width, ro.y1 = desc.camera.height;
-		if (a.region)
-			ro.x0 = (int)a.x0, ro.y0 = (int)a.y0, ro.x1 = (int)a.x1, ro.y1 = (int)a.y1;
-		rc = image_fits(&a, &desc, &d, ro.x1 - ro.x0, ro.y1 - ro.y0);
+		if (a->region)
+			ro.x0 = (int)a->x0, ro.y0 = (int)a->y0, ro.x1 = (int)a->x1, ro.y1 = (int)a->y1;
+		rc = image_fits(a, &desc, &d, ro.x1 - ro.x0, ro.y1 - ro.y0);
 	}
 	if (rc == 0)
 		rc = (int)lower_scene(&d, &desc, &sc, &wt, (int64_t)image_bytes(ro.x1 - ro.x0, ro.y1 - ro.y0));
 	scene_desc_free(&desc); /* lowered: its memory goes to the BVH */
+	/* nothing is printed before the flush, so the warnings can still go */
+	if (s->drop_warnings && d.errors == 0)
+		diag_rewind(&d, start);
 	diag_flush(&d);
 	if (rc)
 		goto done;
 	double t0 = clock_now();
-	accel_build(&sc.accel, &sc.geo, a.accel);
+	accel_build(&sc.accel, &sc.geo, a->accel);
 	double bvh_s = clock_now() - t0;
 
-	ro.progress = a.quiet ? false : a.progress >= 0 ? a.progress : isatty(2);
 	img = image_new(ro.x1 - ro.x0, ro.y1 - ro.y0);
 	if (!img) {
 		fprintf(stderr, "scn: cannot allocate a %d x %d image\n", ro.x1 - ro.x0, ro.y1 - ro.y0);
@@ -257,16 +290,22 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		goto done;
 	}
 	struct ray_stats st;
+	if (s->bar)
+		anim_bar_show(s->bar);
 	t0 = clock_now();
-	if (render_image(&sc, &ro, img, &st) != 0) {
+	int started = render_image(&sc, &ro, img, &st);
+	double render_s = clock_now() - t0;
+	if (s->bar)
+		anim_bar_erase(s->bar);
+	if (started != 0) {
 		fprintf(stderr, "scn: cannot start the render threads\n");
 		rc = EXIT_RENDER;
 		goto done;
 	}
-	double render_s = clock_now() - t0;
 	if (st.nonfinite)
-		fprintf(stderr, "scn: warning: %llu radiance values were not finite and were left out of the image\n",
-		        (unsigned long long)st.nonfinite);
+		fprintf(stderr, "scn: warning: %llu radiance values were not finite and were left out of the image%s%s%s\n",
+		        (unsigned long long)st.nonfinite, s->moment ? " (" : "", s->moment ? s->moment : "",
+		        s->moment ? ")" : "");
 	t0 = clock_now();
 	file_open = false;
 	int e = image_file_commit(&file, img, err, sizeof err);
@@ -275,11 +314,12 @@ int cmd_render(const struct command *self, int argc, char **argv)
 		rc = cli_file_status(e);
 		goto done;
 	}
-	if (a.stats)
+	if (a->stats)
 		print_stats(&lt, &wt, bvh_s, render_s, clock_now() - t0, &sc, &st);
-	if (!a.quiet) {
-		fprintf(stderr, "scn: wrote %s: %d x %d, %d sample%s per pixel, rendered in %.2f s", out, img->width,
-		        img->height, sc.sampling.count, sc.sampling.count == 1 ? "" : "s", render_s);
+	if (!a->quiet) {
+		fprintf(stderr, "scn: wrote %s%s%s%s: %d x %d, %d sample%s per pixel, rendered in %.2f s", s->out,
+		        s->moment ? " (" : "", s->moment ? s->moment : "", s->moment ? ")" : "", img->width, img->height,
+		        sc.sampling.count, sc.sampling.count == 1 ? "" : "s", render_s);
 		if (st.estimated_rmse >= 0)
 			fprintf(stderr, "; estimated RMSE %.3g", st.estimated_rmse);
 		fputc('\n', stderr);
@@ -290,6 +330,82 @@ done:
 	image_free(img);
 	scene_free(&sc);
 	diag_fini(&d);
+	return rc;
+}
+
+static int known_format(const struct command *self, const char *out)
+{
+	if (image_format_of(out) < 0)
+		return cli_usage_error(self, "cannot tell the format of '%s' (use .png, .exr or .ppm)", out);
+	return 0;
+}
+
+/* After the messages of frame k, which failed: which frame it was, and what is written. */
+static void frame_failed(const struct anim_frames *f, long k, const char *clock)
+{
+	char written[96];
+	long done = k - f->first;
+	if (done == 0)
+		snprintf(written, sizeof written, "no frame was written");
+	else if (done == 1)
+		snprintf(written, sizeof written, "frame %ld was written", f->first);
+	else
+		snprintf(written, sizeof written, "frames %ld %s %ld were written", f->first, done == 2 ? "and" : "to", k - 1);
+	fprintf(stderr, "scn: error: frame %ld (clock %s) failed; %s\n", k, clock, written);
+}
+
+/* --frames: each frame a whole render, in order, until one fails. */
+static int render_frames(const struct command *self, const struct render_args *a, bool progress)
+{
+	const struct anim_frames *f = &a->frames;
+	char *fallback = a->out ? NULL : cli_default_output(a->scene, ".png");
+	struct anim_names names;
+	int rc = anim_names_init(&names, self, a->out ? a->out : fallback, a->out != NULL, f);
+	free(fallback);
+	if (rc)
+		return rc;
+	char *name = anim_name(&names, f->first); /* every frame's extension is the first's */
+	rc = known_format(self, name);
+	free(name);
+	struct anim_bar bar;
+	anim_bar_init(&bar, f->end - f->first);
+	for (long k = f->first; rc == 0 && k < f->end; k++) {
+		char clock[32], moment[96];
+		struct load_frame at = { anim_clock(f, k), k };
+		anim_clock_text(at.clock, clock, sizeof clock);
+		snprintf(moment, sizeof moment, "frame %ld, clock %s", k, clock);
+		name = anim_name(&names, k);
+		struct shot s = { .out = name, .at = at, .moment = moment, .drop_warnings = k > f->first,
+		                  .bar = progress ? &bar : NULL };
+		rc = render_shot(self, a, &s);
+		free(name);
+		if (rc)
+			frame_failed(f, k, clock);
+		bar.done++;
+	}
+	anim_names_free(&names);
+	return rc;
+}
+
+int cmd_render(const struct command *self, int argc, char **argv)
+{
+	struct render_args a;
+	int rc = parse_args(self, argc, argv, &a);
+	if (rc)
+		return rc < 0 ? 0 : rc;
+	bool progress = !a.quiet && (a.progress >= 0 ? a.progress : isatty(2));
+	if (a.animate)
+		return render_frames(self, &a, progress);
+	char *out = a.out ? xstrdup(a.out) : cli_default_output(a.scene, ".png");
+	rc = known_format(self, out);
+	if (rc == 0) {
+		char clock[32], moment[48];
+		anim_clock_text(a.clock, clock, sizeof clock);
+		snprintf(moment, sizeof moment, "clock %s", clock);
+		struct shot s = { .out = out, .at = { a.clock, 0 }, .moment = a.clock_given ? moment : NULL,
+		                  .tile_progress = progress };
+		rc = render_shot(self, &a, &s);
+	}
 	free(out);
 	return rc;
 }

@@ -1,6 +1,6 @@
 # src/local.mk: the scn command.
 bin_PROGRAMS += scn
-scn_SOURCES = %D%/main.c %D%/cli.c %D%/cli.h %D%/pov_hint.c %D%/pov_hint.h %D%/cmd_check.c %D%/cmd_render.c
+scn_SOURCES = %D%/main.c %D%/cli.c %D%/cli.h %D%/anim.c %D%/anim.h %D%/pov_hint.c %D%/pov_hint.h %D%/cmd_check.c %D%/cmd_render.c
 scn_LDADD = $(SCN_LIBS)
 scn_SOURCES += src/cmd_diff.c
 scn_SOURCES += %D%/cmd_pov.c

@@ -20,7 +20,8 @@ static const struct command commands[] = {
 	{ "render",
 	  "scn render SCENE [-o OUT] [-W WIDTH] [-H HEIGHT] [-s SAMPLES] [-p PATTERN] [-d MAX_DEPTH]\n"
 	  "                  [-j THREADS] [--accel bvh|grid|none] [--region X0,Y0,X1,Y1] [--seed N]\n"
-	  "                  [--bit-depth 8|16] [--float] [--stats] [--progress | --no-progress] [-q]",
+	  "                  [--bit-depth 8|16] [--float] [--stats] [--progress | --no-progress] [-q]\n"
+	  "                  [--clock C | --frames A..B [--cyclic]]",
 	  "Renders SCENE ('-' reads standard input) to OUT, by default the scene's name with .png.\n"
 	  "OUT's extension picks the format: .png (8-bit sRGB, or --bit-depth 16), .exr (linear\n"
 	  "half float, or --float for 32-bit), .ppm (sRGB, 8 or 16 bits). The image is written to a\n"
@@ -35,16 +36,28 @@ static const struct command commands[] = {
 	  "  --stats       time of each phase, rays by kind, non-finite radiance values\n"
 	  "  --progress    a progress bar with an ETA on standard error (default: on a terminal)\n"
 	  "  -q            no progress bar\n"
+	  "  --clock C     the scene's clock is C (its frame is 0)\n"
+	  "  --frames A..B renders frames A, A+1, ..., B-1, each a whole evaluation of the scene\n"
+	  "                with frame its number and clock going from 0 at A to 1 at B-1\n"
+	  "  --cyclic      with --frames: clock (frame - A) / (B - A), so B-1 leads back to A\n"
+	  "With --frames, OUT's %d or %0Nd (one; %% is a '%') is the frame's number; without\n"
+	  "one, the number goes before the extension, padded with zeros to the digits of B-1\n"
+	  "(anim.png, --frames 1..25: anim01.png ... anim24.png). The first frame's warnings are\n"
+	  "shown, a later frame's diagnostics only when it fails; a failure names its frame and\n"
+	  "ends the run. --progress counts frames, --stats is per frame. SCENE is read for each\n"
+	  "frame, so it cannot be '-'.\n"
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written, 4 the render failed.\n",
 	  cmd_render },
-	{ "pov", "scn pov SCENE [-o OUT.pov]",
+	{ "pov", "scn pov SCENE [-o OUT.pov] [--clock C]",
 	  "Writes the POV-Ray 3.7 scene that renders the same image as SCENE ('-' reads standard\n"
 	  "input) to OUT.pov, by default the scene's name with .pov ('-o -': standard output).\n"
 	  "Its third line, '// Render: povray ...', is the command that renders it, run in the\n"
 	  "file's folder, into NAME-pov.png (a 16-bit linear PNG; NAME.png is scn render's); the\n"
 	  "comments after it say what POV-Ray cannot match exactly, such as random sample\n"
 	  "patterns. The file is written to a temporary file and renamed into place.\n"
+	  "  --clock C   evaluates the scene with clock C (frame 0): one frame of an animation,\n"
+	  "              which the header names (\"the equivalent of SCENE at clock C\")\n"
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written.\n",
 	  cmd_pov },

@@ -9,6 +9,9 @@
 
 #include "cli.h"
 
+/* POV-Ray's first and final frame, +KFI and +KFF, are the two ends of one option */
+#define FRAMES "--frames A..B (+KFI1 +KFF24 is --frames 1..25: B is one past the last frame)"
+
 /* The options with an equivalent, the longer of two that share a start first. */
 static const struct {
 	const char *pov;     /* its letters after the '+', in any case (POV-Ray's are) */
@@ -31,6 +34,10 @@ static const struct {
 	{ "ER", true, "region", "--region X0,Y0,X1,Y1", NULL },
 	{ "EC", true, "region", "--region X0,Y0,X1,Y1", NULL },
 	{ "F", false, "bit-depth", "-o OUT (.png, .exr or .ppm) and --bit-depth 8|16", NULL },
+	{ "KFI", true, "frames", FRAMES, NULL },
+	{ "KFF", true, "frames", FRAMES, NULL },
+	{ "KC", true, "cyclic", "--cyclic", NULL },
+	{ "K", true, "clock", "--clock", "C" },
 	{ "I", false, NULL, "the scene's name alone:", "SCENE" },
 };
 

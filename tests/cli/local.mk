@@ -13,3 +13,5 @@ TESTS += tests/cli/converge.sh
 EXTRA_DIST += tests/cli/converge.sh
 TESTS += tests/cli/options.sh
 EXTRA_DIST += tests/cli/options.sh
+TESTS += tests/cli/anim.sh
+EXTRA_DIST += tests/cli/anim.sh

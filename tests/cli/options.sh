@@ -12,18 +12,6 @@ plane  { <0, 1, 0>, 0 }
 sphere { <0, 0.6, 0>, 0.6 }
 EOF
 
-# usage_error MESSAGE CMD ARGS...: CMD ARGS exits 2, its first line on standard error is
-# "scn: MESSAGE", the usage of CMD follows, and nothing is on standard output
-usage_error() {
-	msg=$1 cmd=$2
-	shift
-	expect_status 2 "$SCN" "$@"
-	[ "$(head -n 1 "$work/err")" = "scn: $msg" ] ||
-		{ fail "'$*': expected 'scn: $msg'"; sed 's/^/  | /' "$work/err"; }
-	sed -n 2p "$work/err" | grep -q "^usage: scn $cmd" || fail "'$*' did not show the usage of $cmd"
-	[ -s "$work/out" ] && fail "'$*' printed on standard output"
-}
-
 # same_image NAME ARGS...: scn render with ARGS writes the same bytes as ref.ppm
 "$SCN" render scene.scn -q -s 16 -p random --seed 5 -j 2 -o ref.ppm || fail "the reference render exited $?"
 same_image() {

@@ -12,11 +12,6 @@ has() {
 	grep -Fq -- "$2" "$1" || { fail "$1 lacks '$2'"; sed 's/^/  | /' "$1" | head -30; }
 }
 
-no_temp() {
-	leftover=$(ls -a | grep '\.tmp$')
-	[ -z "$leftover" ] || { fail "$1: temporary files left: $leftover"; rm -f -- $leftover; }
-}
-
 # --- every example: exit 0, the header, the command line that renders it ---
 for scene in "$SCN_SRCDIR"/examples/*.scn; do
 	name=$(basename "$scene" .scn)

@@ -26,17 +26,6 @@ render() {
 	"$SCN" render scene.scn --no-progress "$@" >"$work/out" 2>"$work/err"
 }
 
-# same_bytes A B WHAT: the files are identical
-same_bytes() {
-	cmp -s "$1" "$2" || fail "$3: $1 and $2 differ"
-}
-
-# no_temp: no temporary file of an image writer is left in the current directory
-no_temp() {
-	leftover=$(ls -a | grep '\.tmp$')
-	[ -z "$leftover" ] || { fail "$1: temporary files left: $leftover"; rm -f -- $leftover; }
-}
-
 # --- determinism: thread count, repeated runs, every pattern and format ---
 for spec in "center 1" "grid 4" "random 4" "jittered 5" "poisson 7"; do
 	set -- $spec

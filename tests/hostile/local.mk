@@ -3,6 +3,7 @@
 HOSTILE_TESTS = \
 	tests/hostile/nesting.sh \
 	tests/hostile/loops.sh \
+	tests/hostile/language.sh \
 	tests/hostile/big.sh \
 	tests/hostile/garbage.sh \
 	tests/hostile/names.sh \

@@ -77,7 +77,7 @@ expect_capped 0 10 "$SCN" check "$work/deep.scn"
 # a loop multiplies its body's work: the evaluation as a whole has a budget of steps
 gen "$work/steps.scn" "print('for i in 0 .. 10000000 { let a = max(' + ', '.join(['i'] * 60) + ') }')"
 expect_capped 1 30 "$SCN" check "$work/steps.scn"
-expect_grep "$work/err" ":1:[0-9]+: error: the scene takes more than 500000000 evaluation steps \\(its loops do too much work\\)$"
+expect_grep "$work/err" ":1:[0-9]+: error: the scene takes more than 500000000 evaluation steps \\(its loops and calls do too much work\\)$"
 # ... and of objects (10^7 two-sphere iterations stop at 10^7 objects; about 1 GB before
 # the error, too much for the sanitizer build's shadow memory)
 if [ -z "$sanitized" ]; then

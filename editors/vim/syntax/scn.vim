@@ -19,7 +19,7 @@ syn keyword scnAttribute zenith horizon image count pattern seed target_error op
 syn keyword scnAttribute inside_vector
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees pow
 syn keyword scnFunction mod atan2 min max dot cross normalize length rand checker
-syn keyword scnConstant pi
+syn keyword scnConstant pi clock frame
 " reserved so that scn can say an scn colour is a plain vector
 syn keyword scnPovColour rgb rgbf rgbt rgbft srgb srgbf srgbt srgbft
 syn match scnDirective /#\h\w*/
