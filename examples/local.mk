@@ -16,3 +16,4 @@ EXTRA_DIST += examples/sky.png examples/sky.pov examples/temple.png
 EXAMPLES += examples/tree.scn
 EXAMPLES += examples/colonnade.scn
 EXAMPLES += examples/orbit.scn
+EXTRA_DIST += examples/tree.png examples/colonnade.png
