@@ -372,6 +372,16 @@ static bool placed(struct checker *c, struct ast *s)
 	return s->kind == AST_LET || s->kind == AST_DEF;
 }
 
+/* Whether another scope fits (a loop's takes two); includes can nest bodies past one
+ * file's brackets. Reports at `at` when not. */
+static bool room_for_scopes(struct checker *c, struct span at)
+{
+	if (c->scope + 2 < sizeof c->scope_bindings / sizeof c->scope_bindings[0])
+		return true;
+	diag_error(c->diag, at, "blocks nested more than %d deep", LANG_MAX_NESTING);
+	return false;
+}
+
 /* A body of statements in a scope of its own: a for loop's or an if's (what, for messages). */
 static void check_body(struct checker *c, struct ast_list *body, const char *what)
 {
@@ -402,6 +412,8 @@ static void check_if(struct checker *c, struct ast *s)
 		before[k].seen = c->once[once_kws[k]].seen;
 		before[k].at = c->once[once_kws[k]].at;
 	}
+	if (!room_for_scopes(c, first_bytes(s->span, 2)))
+		return;
 	check_body(c, &s->u.cond_stmt.then, "an if");
 	for (size_t k = 0; k < NONCE; k++) {
 		then[k].seen = c->once[once_kws[k]].seen;
@@ -430,6 +442,8 @@ static void check_def(struct checker *c, struct ast *s)
 		           builtin_is_function(fn) ? "function" : "constant");
 	struct binding *b = names_bind(c, name, s->u.def.name_span, macro ? BIND_MACRO : BIND_FUNCTION, TYPE_NONE);
 	s->u.def.b = b;
+	if (!room_for_scopes(c, s->u.def.name_span))
+		return;
 	if (b) {
 		b->def = s;
 		b->checking = true;
@@ -441,7 +455,7 @@ static void check_def(struct checker *c, struct ast *s)
 	c->csg_loops = 0;
 	c->macro = macro ? s : outer_macro;
 	c->def_depth++;
-	s->u.def.slot_lo = c->nslots;
+	s->u.def.slot_lo = c->nslots; /* the parameters' slots come first: eval_call.c */
 	names_push_scope(c);
 	for (size_t i = 0; i < s->u.def.params.n; i++) {
 		struct ast *p = s->u.def.params.v[i];
@@ -531,6 +545,8 @@ static void check_parts(struct checker *c, struct ast *s)
 			diag_error(c->diag, s->u.loop.var_span, "for loops nested more than %d deep", LANG_MAX_NESTING);
 			break;
 		}
+		if (!room_for_scopes(c, s->u.loop.var_span))
+			break;
 		/* the loop variable has a scope of its own, around the body's: the body may
 		 * rebind its name (let i = i * 10) */
 		names_push_scope(c);

@@ -138,15 +138,19 @@ static struct ast *name_arg(struct checker *c, struct ast *item, const char *wha
 	return NULL;
 }
 
+/* material NAME, like NAME: a material's name, or a value that holds one (a parameter, a
+ * binding, an array's element through a loop), which eval.c checks when it is known only
+ * there. */
 static void check_material_ref(struct checker *c, struct ast *id)
 {
 	const char *name = id->u.ident.name;
 	struct binding *b = names_lookup(c, name);
-	if (b && b->kind == BIND_MATERIAL) {
+	enum ast_type t = b && names_class(b->kind) == NAMES_VALUES ? b->type : TYPE_NONE;
+	if (b && (b->kind == BIND_MATERIAL || t == TYPE_MATERIAL || t == TYPE_ANY)) {
 		b->used = true;
 		id->u.ident.ref = b;
 		c->tainted |= b->failed;
-		id->type = TYPE_MATERIAL;
+		id->type = b->kind == BIND_MATERIAL ? TYPE_MATERIAL : t;
 		return;
 	}
 	c->tainted = true; /* also when unknown_name says nothing (a name an unread include may define) */

@@ -94,9 +94,8 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 		use(c, b);
 		e->u.ident.ref = b;
 		switch (b->kind) {
-		case BIND_MATERIAL:
-			diag_error(c->diag, e->span, "'%s' is a material, not a value", name);
-			return TYPE_NONE;
+		case BIND_MATERIAL: /* a value to pass on: to a macro, into an array */
+			return TYPE_MATERIAL;
 		case BIND_FUNCTION:
 			diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
 			return TYPE_NONE;

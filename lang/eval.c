@@ -31,7 +31,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		case KW_FOV:
 			if (num_of(ev, arg0(it), &c->fov) && !(c->fov > 0 && c->fov < 180))
 				eval_error(ev, arg0(it), "fov must be between 0 and 180 degrees (both excluded), not %s",
-				           num_text(c->fov, nb));
+				           value_number_text(c->fov, nb));
 			break;
 		case KW_RESOLUTION:
 			c->resolution_span = it->span;
@@ -142,7 +142,7 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 		case KW_TARGET_ERROR:
 			target_at = arg0(it);
 			if (num_of(ev, arg0(it), &sd->target_error) && !(sd->target_error > 0))
-				eval_error(ev, arg0(it), "target_error must be positive, not %s", num_text(sd->target_error, nb));
+				eval_error(ev, arg0(it), "target_error must be positive, not %s", value_number_text(sd->target_error, nb));
 			break;
 		}
 	}
@@ -195,7 +195,6 @@ static void iterate(struct evaluator *ev, struct ast *s, const struct value *var
 	struct heap_mark mark = heap_mark(ev);
 	ev->context[ev->ncontext - 1].var = *var;
 	ev->slots[slot] = *var;
-	ev->bad[slot] = false;
 	eval_stmts(ev, &s->u.loop.body);
 	heap_release(ev, mark);
 }
@@ -256,7 +255,8 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 	switch (s->kind) {
 	case AST_LET: {
 		unsigned slot = s->u.let.b->slot;
-		ev->bad[slot] = !eval_expr(ev, s->u.let.value, &ev->slots[slot]);
+		if (!eval_expr(ev, s->u.let.value, &ev->slots[slot]))
+			ev->slots[slot].type = TYPE_NONE;
 		return;
 	}
 	case AST_INCLUDE: /* its bindings last beyond it */
@@ -297,7 +297,8 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 			break;
 		case KW_MATERIAL:
 			ev->slots[s->u.stmt.b->slot] = (struct value){
-				.type = TYPE_NUM, .v = { eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span) } };
+				.type = TYPE_MATERIAL,
+				.v = { eval_material(ev, s->u.stmt.block, s->u.stmt.name, s->u.stmt.name_span) } };
 			break;
 		default:
 			if (kw_is_csg(s->u.stmt.kw))
@@ -327,18 +328,16 @@ struct evaluator *eval_new(struct diag *d, struct scene_desc *out)
 	ev->out = out;
 	ev->heap = arena_new();
 	ev->heap_now = arena_mark(ev->heap);
+	ev->stack_base = (uintptr_t)__builtin_frame_address(0);
 	return ev;
 }
 
-/* Makes room for nslots bindings; a new one is not bad until its let says so (a loop
- * variable's and a material's never are). */
+/* Makes room for nslots bindings (each is set before it can be used). */
 static void grow_slots(struct evaluator *ev, size_t nslots)
 {
 	if (nslots <= ev->nslots)
 		return;
 	xgrow((void **)&ev->slots, &ev->cap_slots, nslots, sizeof *ev->slots);
-	xgrow((void **)&ev->bad, &ev->cap_bad, nslots, sizeof *ev->bad);
-	memset(ev->bad + ev->nslots, 0, (nslots - ev->nslots) * sizeof *ev->bad);
 	ev->nslots = nslots;
 }
 
@@ -349,21 +348,22 @@ void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots)
 		eval_stmt(ev, stmt);
 }
 
-void eval_free(struct evaluator *ev)
+void eval_free(struct evaluator *ev, struct eval_counts *counts)
 {
+	counts->steps += ev->steps;
+	counts->calls += ev->ncalls;
 	free(ev->slots);
-	free(ev->bad);
 	free(ev->saved);
-	free(ev->saved_bad);
 	free(ev->context);
 	arena_free(ev->heap);
 	free(ev);
 }
 
-void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out)
+void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out,
+               struct eval_counts *counts)
 {
 	struct evaluator *ev = eval_new(d, out);
 	grow_slots(ev, nslots);
 	eval_stmts(ev, stmts);
-	eval_free(ev);
+	eval_free(ev, counts);
 }

@@ -2,6 +2,8 @@
 #ifndef SCN_EVAL_H
 #define SCN_EVAL_H
 
+#include <stdint.h>
+
 #include "ast.h"
 #include "diag.h"
 #include "scene_desc.h"
@@ -19,15 +21,24 @@
 #define LANG_MAX_CALL_DEPTH 256
 #define LANG_MAX_ELEMENTS 10000000
 
+/* What an evaluation did, for --stats: expressions evaluated (the steps that
+ * LANG_MAX_STEPS bounds) and calls of the scene's functions and macros. */
+struct eval_counts {
+	uint64_t steps, calls;
+};
+
 /* Evaluates statements that check_file accepted without errors (nslots is what it
- * returned) into out, which scene_desc_init prepared. Range errors go to d. */
-void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out);
+ * returned) into out, which scene_desc_init prepared. Range errors go to d. Adds what it
+ * did to *counts. */
+void eval_file(struct diag *d, struct ast_list *stmts, unsigned nslots, struct scene_desc *out,
+               struct eval_counts *counts);
 
 /* The same one statement at a time, for a file evaluated as it is parsed: each
  * statement after check_statement accepted it, with check_slots' count. */
 struct evaluator;
 struct evaluator *eval_new(struct diag *d, struct scene_desc *out);
 void eval_statement(struct evaluator *ev, struct ast *stmt, unsigned nslots);
-void eval_free(struct evaluator *ev);
+/* Adds what ev did to *counts, and frees it. */
+void eval_free(struct evaluator *ev, struct eval_counts *counts);
 
 #endif

@@ -9,8 +9,10 @@
  * body between call_begin and call_end. */
 #include "eval_internal.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "check.h"
 #include "xalloc.h"
@@ -19,10 +21,9 @@
 static void save_slots(struct evaluator *ev, unsigned lo, unsigned hi)
 {
 	size_t n = hi - lo;
-	xgrow((void **)&ev->saved, &ev->cap_saved, ev->nsaved + n, sizeof *ev->saved);
-	xgrow((void **)&ev->saved_bad, &ev->cap_saved_bad, ev->nsaved + n, sizeof *ev->saved_bad);
+	if (ev->nsaved + n > ev->cap_saved)
+		xgrow((void **)&ev->saved, &ev->cap_saved, ev->nsaved + n, sizeof *ev->saved);
 	memcpy(ev->saved + ev->nsaved, ev->slots + lo, n * sizeof *ev->saved);
-	memcpy(ev->saved_bad + ev->nsaved, ev->bad + lo, n * sizeof *ev->saved_bad);
 	ev->nsaved += n;
 }
 
@@ -31,7 +32,18 @@ static void restore_slots(struct evaluator *ev, unsigned lo, unsigned hi)
 	size_t n = hi - lo;
 	ev->nsaved -= n;
 	memcpy(ev->slots + lo, ev->saved + ev->nsaved, n * sizeof *ev->saved);
-	memcpy(ev->bad + lo, ev->saved_bad + ev->nsaved, n * sizeof *ev->saved_bad);
+}
+
+/* The bytes of stack the evaluation may use: the machine's limit less a margin for what
+ * one body nests between two calls (expressions and blocks, each bounded by
+ * LANG_MAX_NESTING) and for what runs after. */
+static size_t stack_budget(void)
+{
+	const size_t margin = 4u << 20;
+	struct rlimit r;
+	if (getrlimit(RLIMIT_STACK, &r) != 0 || r.rlim_cur == RLIM_INFINITY || r.rlim_cur > (256u << 20))
+		return 256u << 20;
+	return r.rlim_cur > 2 * margin ? (size_t)r.rlim_cur - margin : (size_t)r.rlim_cur / 2;
 }
 
 bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args, struct call *call)
@@ -42,17 +54,25 @@ bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args
 		                LANG_MAX_CALL_DEPTH);
 		return false;
 	}
+	/* 256 calls of bodies that nest 1000 deep would outgrow the stack: the depth in
+	 * bytes is checked too */
+	uintptr_t here = (uintptr_t)__builtin_frame_address(0);
+	if (!ev->stack_budget)
+		ev->stack_budget = stack_budget();
+	if (ev->stack_base > here && ev->stack_base - here > ev->stack_budget) {
+		eval_error_span(ev, site, site->u.call.name_span, "calls nested too deep for the stack: each holds "
+		                "deeply nested expressions or blocks");
+		return false;
+	}
 	call->def = def;
 	call->recursive = def->u.def.active > 0;
 	if (call->recursive)
 		save_slots(ev, def->u.def.slot_lo, def->u.def.slot_hi);
-	for (size_t i = 0; i < def->u.def.params.n; i++) {
-		unsigned slot = def->u.def.params.v[i]->u.ident.ref->slot;
-		ev->slots[slot] = args[i];
-		ev->bad[slot] = false;
-	}
+	/* check.c binds the parameters first, in order, from slot_lo */
+	memcpy(ev->slots + def->u.def.slot_lo, args, def->u.def.params.n * sizeof *args);
 	def->u.def.active++;
 	ev->calls++;
+	ev->ncalls++;
 	context_push(ev, site, NULL);
 	return true;
 }

@@ -1,6 +1,7 @@
 /* eval_expr.c: the evaluator's expressions: every value computed, a non-finite result an
- * error at its place; the values of items as numbers, vectors and whole numbers; and the
- * evaluator's error reports, once per place with the loop values that led there. */
+ * error at its place, a type that check.c could not know checked by value.h's rules;
+ * calls of the scene's functions; the heap that strings and arrays live on; and the
+ * values of items as numbers, vectors, strings, materials and whole numbers. */
 #include "eval_internal.h"
 
 #include <stdarg.h>
@@ -14,10 +15,8 @@
 
 /* ---- the heap ---- */
 
-void heap_release(struct evaluator *ev, struct heap_mark m)
+void heap_release_to(struct evaluator *ev, struct heap_mark m)
 {
-	if (ev->elements == m.elements) /* every allocation counts at least one element */
-		return;
 	arena_release(ev->heap, m.arena);
 	ev->elements = m.elements;
 	ev->heap_now = m.arena;
@@ -77,6 +76,24 @@ static bool make_array(struct evaluator *ev, struct ast *e, const struct value *
 	return true;
 }
 
+/* eval_expr, with the leaves (numbers and bindings: most operands) taken here rather
+ * than through its dispatch: the cost of a call of a macro is mostly its arguments'. */
+static inline bool operand(struct evaluator *ev, struct ast *e, struct value *out)
+{
+	if (e->kind == AST_NUM) {
+		ev->steps++;
+		out->type = TYPE_NUM;
+		out->v[0] = e->u.num;
+		return true;
+	}
+	if (e->kind == AST_IDENT && e->u.ident.builtin < 0 && ev->slots[e->u.ident.ref->slot].type != TYPE_NONE) {
+		ev->steps++;
+		*out = ev->slots[e->u.ident.ref->slot];
+		return true;
+	}
+	return eval_expr(ev, e, out);
+}
+
 /* Reports a type rule's message at the operand it blames. */
 static bool type_error(struct evaluator *ev, struct ast *e, enum blame blame, const char *why)
 {
@@ -103,30 +120,36 @@ static bool boolean(struct evaluator *ev, struct ast *e, const struct value *v, 
 	return false;
 }
 
+/* a op b for + - * /; false (reported at e) when the result is not a finite number. */
+static inline bool arithmetic(struct evaluator *ev, struct ast *e, char op, double a, double b, double *out)
+{
+	switch (op) {
+	case '+': *out = a + b; break;
+	case '-': *out = a - b; break;
+	case '*': *out = a * b; break;
+	default:
+		if (b == 0) {
+			eval_error(ev, e, "division by zero");
+			return false;
+		}
+		*out = a / b;
+	}
+	if (isfinite(*out))
+		return true;
+	eval_error(ev, e, "the result is too large to be a number");
+	return false;
+}
+
+/* The same componentwise, for vectors (a number promoted). */
 static bool eval_arithmetic(struct evaluator *ev, struct ast *e, const struct value *l, const struct value *r,
                             struct value *out)
 {
 	double a[3], b[3];
 	broadcast(l, a);
 	broadcast(r, b);
-	int comps = out->type == TYPE_VEC ? 3 : 1;
-	for (int k = 0; k < comps; k++) {
-		switch (e->u.bin.op) {
-		case '+': out->v[k] = a[k] + b[k]; break;
-		case '-': out->v[k] = a[k] - b[k]; break;
-		case '*': out->v[k] = a[k] * b[k]; break;
-		default:
-			if (b[k] == 0) {
-				eval_error(ev, e, "division by zero");
-				return false;
-			}
-			out->v[k] = a[k] / b[k];
-		}
-		if (!isfinite(out->v[k])) {
-			eval_error(ev, e, "the result is too large to be a number");
+	for (int k = 0; k < 3; k++)
+		if (!arithmetic(ev, e, e->u.bin.op, a[k], b[k], &out->v[k]))
 			return false;
-		}
-	}
 	return true;
 }
 
@@ -134,7 +157,7 @@ static bool eval_binary(struct evaluator *ev, struct ast *e, struct value *out)
 {
 	char op = e->u.bin.op;
 	struct value l, r;
-	if (!eval_expr(ev, e->u.bin.l, &l))
+	if (!operand(ev, e->u.bin.l, &l))
 		return false;
 	if (op == OP_AND || op == OP_OR) { /* the right operand only when it decides */
 		if (!boolean(ev, e->u.bin.l, &l, op))
@@ -143,21 +166,24 @@ static bool eval_binary(struct evaluator *ev, struct ast *e, struct value *out)
 			*out = l;
 			return true;
 		}
-		if (!eval_expr(ev, e->u.bin.r, &r) || !boolean(ev, e->u.bin.r, &r, op))
+		if (!operand(ev, e->u.bin.r, &r) || !boolean(ev, e->u.bin.r, &r, op))
 			return false;
 		*out = r;
 		return true;
 	}
-	if (!eval_expr(ev, e->u.bin.r, &r))
+	if (!operand(ev, e->u.bin.r, &r))
 		return false;
-	enum ast_type t = TYPE_NUM; /* of two numbers, the most common case, whatever op */
+	bool arith = op == '+' || op == '-' || op == '*' || op == '/';
+	if (arith && l.type == TYPE_NUM && r.type == TYPE_NUM) { /* the most common case */
+		out->type = TYPE_NUM;
+		return arithmetic(ev, e, op, l.v[0], r.v[0], &out->v[0]);
+	}
+	enum ast_type t = TYPE_BOOL; /* a comparison of two numbers */
 	if (l.type != TYPE_NUM || r.type != TYPE_NUM) {
 		char why[160];
 		enum blame blame;
 		if ((t = type_binary(op, l.type, r.type, why, sizeof why, &blame)) == TYPE_NONE)
 			return type_error(ev, e, blame, why);
-	} else if (op != '+' && op != '-' && op != '*' && op != '/') {
-		t = TYPE_BOOL;
 	}
 	out->type = (uint8_t)t;
 	switch (op) {
@@ -193,11 +219,11 @@ static bool eval_index(struct evaluator *ev, struct ast *e, struct value *out)
 	}
 	double k = i.v[0];
 	if (k != floor(k)) {
-		eval_error(ev, e->u.bin.r, "an index must be a whole number, not %s", num_text(k, nb));
+		eval_error(ev, e->u.bin.r, "an index must be a whole number, not %s", value_number_text(k, nb));
 		return false;
 	}
 	if (k < 0 || k >= a.len) {
-		eval_error(ev, e->u.bin.r, "index %s is out of range: the array has %u element%s%s", num_text(k, nb), a.len,
+		eval_error(ev, e->u.bin.r, "index %s is out of range: the array has %u element%s%s", value_number_text(k, nb), a.len,
 		           a.len == 1 ? "" : "s", a.len ? " (the first is 0)" : "");
 		return false;
 	}
@@ -251,7 +277,7 @@ bool call_enter(struct evaluator *ev, struct ast *site, struct call *call)
 	struct value *args = n <= SMALL_ARGS ? small : xmalloc(n * sizeof *args);
 	bool ok = true;
 	for (size_t i = 0; i < n && ok; i++)
-		ok = eval_expr(ev, site->u.call.args.v[i], &args[i]);
+		ok = operand(ev, site->u.call.args.v[i], &args[i]);
 	ok = ok && call_begin(ev, site, args, call);
 	if (args != small)
 		free(args);
@@ -298,7 +324,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 		out->type = TYPE_VEC;
 		for (int k = 0; k < 3; k++) {
 			struct value c;
-			if (!eval_expr(ev, e->u.vec[k], &c))
+			if (!operand(ev, e->u.vec[k], &c))
 				return false;
 			if (c.type != TYPE_NUM) {
 				eval_error(ev, e->u.vec[k], "a vector's components must be numbers, found %s", type_name(c.type));
@@ -327,7 +353,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 			          ? ev->out->clock : (double)ev->out->frame;
 			return true;
 		}
-		if (ev->bad[e->u.ident.ref->slot]) {
+		if (ev->slots[e->u.ident.ref->slot].type == TYPE_NONE) { /* its let failed */
 			ev->failures++;
 			return false;
 		}
@@ -420,6 +446,15 @@ bool str_of(struct evaluator *ev, struct ast *e, const char **out)
 	return true;
 }
 
+bool material_of(struct evaluator *ev, struct ast *e, int *out)
+{
+	struct value v;
+	if (!value_of(ev, e, 1u << TYPE_MATERIAL, "a material", &v))
+		return false;
+	*out = (int)v.v[0];
+	return true;
+}
+
 bool truth_of(struct evaluator *ev, struct ast *e, bool *out)
 {
 	struct value v;
@@ -434,7 +469,7 @@ static const char *bound_text(double x, char buf[32])
 {
 	if (fabs(x) == 9007199254740992.0)
 		return x < 0 ? "-2^53" : "2^53";
-	return num_text(x, buf);
+	return value_number_text(x, buf);
 }
 
 /* A whole number in [lo, hi]; what names it in the message. */
@@ -445,7 +480,7 @@ bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const c
 	if (*out != floor(*out) || *out < lo || *out > hi) {
 		char lo_buf[32], hi_buf[32], nb[32];
 		eval_error(ev, e, "%s must be a whole number from %s to %s, not %s", what, bound_text(lo, lo_buf),
-		           bound_text(hi, hi_buf), num_text(*out, nb));
+		           bound_text(hi, hi_buf), value_number_text(*out, nb));
 		return false;
 	}
 	return true;

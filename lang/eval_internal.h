@@ -45,9 +45,10 @@ struct heap_mark {
 struct evaluator {
 	struct diag *diag;
 	struct scene_desc *out;
-	struct value *slots;       /* current value of each binding; a material's is its index */
-	bool *bad;                 /* the binding's value could not be computed */
-	size_t nslots, cap_slots, cap_bad;
+	/* current value of each binding (a material's is its index); TYPE_NONE when it could
+	 * not be computed */
+	struct value *slots;
+	size_t nslots, cap_slots;
 	/* the strings and arrays that values point to, released at the end of each statement
 	 * and loop iteration that binds nothing beyond itself; their elements (a string's
 	 * bytes count as elements) against LANG_MAX_ELEMENTS */
@@ -56,9 +57,11 @@ struct evaluator {
 	struct arena_mark heap_now;  /* the heap's state: marked often, changed seldom */
 	/* the values of the running calls' bindings that a call of the same definition hid */
 	struct value *saved;
-	bool *saved_bad;
-	size_t nsaved, cap_saved, cap_saved_bad;
+	size_t nsaved, cap_saved;
 	unsigned calls;            /* calls running, against LANG_MAX_CALL_DEPTH */
+	uint64_t ncalls;           /* calls made */
+	uintptr_t stack_base;      /* the stack where the evaluation began, and how far below */
+	size_t stack_budget;       /* it calls may go (eval_call.c) */
 	uint64_t iterations;       /* loop iterations so far, against LANG_MAX_ITERATIONS */
 	uint64_t steps;            /* expressions evaluated so far, against LANG_MAX_STEPS */
 	/* values that could not be computed, each time (eval_error and the use of a bad
@@ -102,16 +105,24 @@ static inline struct heap_mark heap_mark(const struct evaluator *ev)
 {
 	return (struct heap_mark){ ev->heap_now, ev->elements };
 }
-void heap_release(struct evaluator *ev, struct heap_mark m);
+void heap_release_to(struct evaluator *ev, struct heap_mark m);
+static inline void heap_release(struct evaluator *ev, struct heap_mark m)
+{
+	if (ev->elements != m.elements) /* every allocation counts at least one element */
+		heap_release_to(ev, m);
+}
 
 /* The value of e; false after an error. */
 bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out);
 /* e as a vector (a number promoted), as a number, as a string, as a boolean, as a whole
- * number in [lo, hi] (what names it in the message); false after an error. */
+ * number in [lo, hi] (what names it in the message); false after an error (a value of
+ * another type can reach them only through what check.c knew as TYPE_ANY). */
 bool vec_of(struct evaluator *ev, struct ast *e, double out[3]);
 bool num_of(struct evaluator *ev, struct ast *e, double *out);
 bool str_of(struct evaluator *ev, struct ast *e, const char **out);
 bool truth_of(struct evaluator *ev, struct ast *e, bool *out);
+/* e as a material: its index in the scene's materials. */
+bool material_of(struct evaluator *ev, struct ast *e, int *out);
 /* A file's name, e's string, and its path from src's folder (both malloc'd); false after
  * an error. A name that check.c could not see (not written as a literal) is checked for
  * reading here, with what the file is for in the message. */
@@ -133,8 +144,6 @@ void call_end(struct evaluator *ev, const struct call *call);
 
 /* ---- eval_report.c ---- */
 
-/* A number for a message, in buf. */
-const char *num_text(double x, char buf[32]);
 /* Reports an error at node at (at span sp), once per place however many loop iterations
  * and calls reach it, with notes on the loops' values and the calls that led there. */
 void eval_error(struct evaluator *ev, struct ast *at, const char *fmt, ...)

@@ -29,8 +29,9 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 		struct ast *it = block->items.v[i];
 		switch (it->u.item.kw) {
 		case KW_LIKE: {
-			struct ast *id = arg0(it);
-			m = ev->out->materials[(size_t)ev->slots[id->u.ident.ref->slot].v[0]];
+			int like;
+			if (material_of(ev, arg0(it), &like))
+				m = ev->out->materials[like];
 			break;
 		}
 		case KW_DIFFUSE: {
@@ -44,19 +45,19 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 			m.checker = vec_of(ev, a->v[0], m.diffuse) && vec_of(ev, a->v[1], m.diffuse2) &&
 			            num_of(ev, a->v[2], &m.checker_size);
 			if (m.checker && !(m.checker_size > 0))
-				eval_error(ev, a->v[2], "the checker's size must be positive, not %s", num_text(m.checker_size, nb));
+				eval_error(ev, a->v[2], "the checker's size must be positive, not %s", value_number_text(m.checker_size, nb));
 			break;
 		}
 		case KW_SPECULAR: vec_of(ev, arg0(it), m.specular); break;
 		case KW_SHININESS:
 			if (num_of(ev, arg0(it), &m.shininess) && m.shininess < 0)
-				eval_error(ev, arg0(it), "shininess must not be negative, not %s", num_text(m.shininess, nb));
+				eval_error(ev, arg0(it), "shininess must not be negative, not %s", value_number_text(m.shininess, nb));
 			break;
 		case KW_REFLECT: vec_of(ev, arg0(it), m.reflect); break;
 		case KW_TRANSMIT: vec_of(ev, arg0(it), m.transmit); break;
 		case KW_IOR:
 			if (num_of(ev, arg0(it), &m.ior) && !(m.ior > 0))
-				eval_error(ev, arg0(it), "ior must be positive, not %s", num_text(m.ior, nb));
+				eval_error(ev, arg0(it), "ior must be positive, not %s", value_number_text(m.ior, nb));
 			break;
 		case KW_FRESNEL: m.fresnel = true; break;
 		case KW_EMIT: vec_of(ev, arg0(it), m.emit); break;
@@ -182,7 +183,7 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 				struct ast *at = fl->v[i]->kind == AST_VEC ? fl->v[i]->u.vec[k] : fl->v[i];
 				char nb[32];
 				eval_error(ev, at, "a face's indices must be whole numbers from 0 to %u (0-based), not %s",
-				           vl->n - 1, num_text(f[k], nb));
+				           vl->n - 1, value_number_text(f[k], nb));
 				return false;
 			}
 			m->faces[i][k] = (uint32_t)f[k];
@@ -253,7 +254,7 @@ static bool cone_values(struct evaluator *ev, struct ast_list *args, bool cylind
 	}
 	if (cylinder) {
 		if (have_r[0] && !(radius[0] > 0)) {
-			eval_error(ev, r[0], "a cylinder's radius must be positive, not %s", num_text(radius[0], nb));
+			eval_error(ev, r[0], "a cylinder's radius must be positive, not %s", value_number_text(radius[0], nb));
 			ok = false;
 		}
 		return ok;
@@ -261,7 +262,7 @@ static bool cone_values(struct evaluator *ev, struct ast_list *args, bool cylind
 	static const char *const which[2] = { "base", "cap" };
 	for (int k = 0; k < 2; k++)
 		if (have_r[k] && radius[k] < 0) {
-			eval_error(ev, r[k], "a cone's %s radius must not be negative, not %s", which[k], num_text(radius[k], nb));
+			eval_error(ev, r[k], "a cone's %s radius must not be negative, not %s", which[k], value_number_text(radius[k], nb));
 			ok = false;
 		}
 	if (have_r[0] && have_r[1] && radius[0] == 0 && radius[1] == 0) {
@@ -286,17 +287,17 @@ static bool disc_values(struct evaluator *ev, struct ast_list *args, struct obje
 		ok = false;
 	}
 	if (have_radius && !(*radius > 0)) {
-		eval_error(ev, args->v[2], "a disc's radius must be positive, not %s", num_text(*radius, nb));
+		eval_error(ev, args->v[2], "a disc's radius must be positive, not %s", value_number_text(*radius, nb));
 		ok = false;
 	}
 	if (args->n < 4 || !have_hole)
 		return ok;
 	if (*hole < 0) {
-		eval_error(ev, args->v[3], "a disc's hole radius must not be negative, not %s", num_text(*hole, nb));
+		eval_error(ev, args->v[3], "a disc's hole radius must not be negative, not %s", value_number_text(*hole, nb));
 		ok = false;
 	} else if (have_radius && *radius > 0 && *hole >= *radius) {
 		eval_error(ev, args->v[3], "a disc's hole radius must be less than its radius, %s, not %s",
-		           num_text(*radius, nb), num_text(*hole, nb2));
+		           value_number_text(*radius, nb), value_number_text(*hole, nb2));
 		ok = false;
 	}
 	return ok;
@@ -310,15 +311,15 @@ static bool torus_values(struct evaluator *ev, struct ast_list *args, struct obj
 	bool have_major = num_of(ev, args->v[0], major), have_minor = num_of(ev, args->v[1], minor);
 	bool ok = have_major && have_minor;
 	if (have_major && !(*major > 0)) {
-		eval_error(ev, args->v[0], "a torus's major radius must be positive, not %s", num_text(*major, nb));
+		eval_error(ev, args->v[0], "a torus's major radius must be positive, not %s", value_number_text(*major, nb));
 		ok = false;
 	}
 	if (have_minor && !(*minor > 0)) {
-		eval_error(ev, args->v[1], "a torus's minor radius must be positive, not %s", num_text(*minor, nb));
+		eval_error(ev, args->v[1], "a torus's minor radius must be positive, not %s", value_number_text(*minor, nb));
 		ok = false;
 	} else if (have_minor && have_major && *major > 0 && *minor >= *major) {
 		eval_error(ev, args->v[1], "a torus's minor radius must be less than its major radius, %s, not %s",
-		           num_text(*major, nb), num_text(*minor, nb2));
+		           value_number_text(*major, nb), value_number_text(*minor, nb2));
 		ok = false;
 	}
 	return ok;
@@ -336,7 +337,7 @@ static bool shape_values(struct evaluator *ev, struct ast *s, struct object_desc
 		ok = vec_of(ev, args->v[0], obj->u.sphere.center) && num_of(ev, args->v[1], &obj->u.sphere.radius);
 		if (ok && !(obj->u.sphere.radius > 0)) {
 			eval_error(ev, args->v[1], "a sphere's radius must be positive, not %s",
-			           num_text(obj->u.sphere.radius, nb));
+			           value_number_text(obj->u.sphere.radius, nb));
 			ok = false;
 		}
 		return ok;
@@ -363,7 +364,7 @@ static bool shape_values(struct evaluator *ev, struct ast *s, struct object_desc
 		for (int k = 0; k < 3 && ok; k++)
 			if (c[0][k] == c[1][k])
 				used += (size_t)snprintf(same + used, sizeof same - used, "%s%c = %s", used ? ", " : "", "xyz"[k],
-				                         num_text(c[0][k], nb));
+				                         value_number_text(c[0][k], nb));
 		if (used) {
 			eval_error(ev, args->v[1], "a box's corners must differ in x, y and z; both have %s", same);
 			ok = false;
@@ -407,7 +408,7 @@ static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc
 			if (it->u.item.block)
 				obj->material = eval_material(ev, it->u.item.block, NULL, it->span);
 			else
-				obj->material = (int)ev->slots[arg0(it)->u.ident.ref->slot].v[0];
+				ok &= material_of(ev, arg0(it), &obj->material);
 			own_material = true;
 			break;
 		case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:

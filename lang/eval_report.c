@@ -10,19 +10,6 @@
 
 #include "xalloc.h"
 
-/* A number for a message: the shortest of %.15g to %.17g that reads back as x, so that
- * a value the user wrote (ior -1.33) shows as written. */
-const char *num_text(double x, char buf[32])
-{
-	for (int prec = 15; prec < 17; prec++) {
-		snprintf(buf, 32, "%.*g", prec, x);
-		if (strtod(buf, NULL) == x)
-			return buf;
-	}
-	snprintf(buf, 32, "%.17g", x);
-	return buf;
-}
-
 void context_push(struct evaluator *ev, const struct ast *node, const struct value *var)
 {
 	if (ev->ncontext == ev->cap_context)
@@ -44,7 +31,7 @@ static const char *value_text(const struct value *v, char *buf, size_t size)
 	char a[32], b[32], c[32];
 	switch (v->type) {
 	case TYPE_VEC:
-		snprintf(buf, size, "<%s, %s, %s>", num_text(v->v[0], a), num_text(v->v[1], b), num_text(v->v[2], c));
+		snprintf(buf, size, "<%s, %s, %s>", value_number_text(v->v[0], a), value_number_text(v->v[1], b), value_number_text(v->v[2], c));
 		break;
 	case TYPE_BOOL:
 		snprintf(buf, size, "%s", v->truth ? "true" : "false");
@@ -56,7 +43,7 @@ static const char *value_text(const struct value *v, char *buf, size_t size)
 		snprintf(buf, size, "an array of %u", v->len);
 		break;
 	default:
-		snprintf(buf, size, "%s", num_text(v->v[0], a));
+		snprintf(buf, size, "%s", value_number_text(v->v[0], a));
 		break;
 	}
 	return buf;

@@ -31,7 +31,7 @@ static void load_in_phases(struct diag *d, const struct source *src, struct scen
 	 * their value errors (check.c marks the others failed); once the errors have reached
 	 * the limit nothing more would print */
 	if (!diag_stopped(d))
-		eval_file(d, &stmts, nslots, out);
+		eval_file(d, &stmts, nslots, out, &t->evaluated);
 	t->eval += clock_now() - t2;
 	arena_free(a);
 }
@@ -90,7 +90,7 @@ static bool load_streaming(struct diag *d, const struct source *src, struct scen
 	/* the file's unused names are warned about at its end, as in phases */
 	check_free(st.checker, diag_any_order(d, st.start));
 	bool same = diag_any_order(d, st.start);
-	eval_free(st.ev);
+	eval_free(st.ev, &t->evaluated);
 	arena_free(nodes);
 	arena_free(keep);
 	/* the exact clock says how much time there was, the coarse one how it divides (all
@@ -130,6 +130,7 @@ enum load_status load_scene(struct diag *d, const char *path, const struct load_
 	struct diag_mark start = diag_mark(d);
 	if (!load_streaming(d, src, out, &t)) {
 		diag_rewind(d, start);
+		t.evaluated = (struct eval_counts){ 0 };
 		scene_desc_free(out);
 		scene_desc_init(out);
 		out->clock = moment.clock;

@@ -3,6 +3,7 @@
 #define SCN_LOAD_H
 
 #include "diag.h"
+#include "eval.h"
 #include "scene_desc.h"
 
 /* LOAD_TOO_BIG: the scene needs more memory than the machine has (lower_scene). */
@@ -10,6 +11,7 @@ enum load_status { LOAD_OK = 0, LOAD_SCENE_ERROR = 1, LOAD_IO_ERROR = 3, LOAD_TO
 
 struct load_times {
 	double parse, check, eval;     /* seconds; parse includes reading the file */
+	struct eval_counts evaluated;  /* of the evaluation that gave the scene */
 };
 
 /* The moment of an animation a scene is evaluated at: the values of clock and frame. */

@@ -158,7 +158,7 @@ bool type_condition(enum ast_type t, char *why, size_t size)
 const char *value_number_text(double x, char buf[32])
 {
 	if (x == floor(x) && fabs(x) < 9007199254740992.0) {
-		snprintf(buf, 32, "%.0f", x == 0 ? 0.0 : x); /* -0 reads "0" */
+		snprintf(buf, 32, "%.0f", x); /* -0 stays "-0": it reads back as itself */
 		return buf;
 	}
 	for (int prec = 1; prec < 17; prec++) {

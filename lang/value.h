@@ -37,8 +37,9 @@ enum ast_type type_unary(char op, enum ast_type t, char *why, size_t size);
 /* Whether t may be a condition (of if, ?:); when not, the message. */
 bool type_condition(enum ast_type t, char *why, size_t size);
 
-/* str(x): the shortest decimal that reads back as x; a whole number below 2^53 without
- * a decimal point or an exponent. */
+/* str(x), and a number in a message: the shortest decimal that reads back as x (so that
+ * a value the user wrote, ior -1.33, shows as written); a whole number below 2^53
+ * without a decimal point or an exponent. */
 const char *value_number_text(double x, char buf[32]);
 /* l == r for values of types that type_binary accepts for '=='. */
 bool value_equal(const struct value *l, const struct value *r);

@@ -3,6 +3,7 @@
  * by kind with --stats; once, or for each frame of an animation (--frames). */
 #include "config.h"
 
+#include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -205,6 +206,8 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 	        "  render %.3fs  write %.3fs\n",
 	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, sc->accel.grid ? "grid" : "bvh", bvh_s,
 	        render_s, write_s);
+	fprintf(stderr, "evaluation: %" PRIu64 " steps, %" PRIu64 " calls of functions and macros\n", lt->evaluated.steps,
+	        lt->evaluated.calls);
 	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu solids of %zu parts, %zu lights, %zu materials; ",
 	        sc->geo.nspheres, sc->geo.nplanes, sc->geo.ntriangles, sc->geo.nsolids + sc->geo.nunbounded,
 	        sc->geo.nparts, sc->nlights, sc->nmaterials);

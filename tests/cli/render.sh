@@ -145,10 +145,17 @@ render --stats -j 1 -o stats.png
 expect_grep "$work/err" '^time: parse [0-9.]+s  check [0-9.]+s  evaluate [0-9.]+s .* build bvh [0-9.]+s  render [0-9.]+s  write [0-9.]+s$'
 expect_grep "$work/err" '^rays: +camera 1200 +shadow [1-9][0-9]* +reflection [1-9][0-9]* +refraction [1-9][0-9]* +total [0-9]+$'
 expect_grep "$work/err" '^non-finite radiance values: 0$'
+expect_grep "$work/err" '^evaluation: [1-9][0-9]* steps, 0 calls of functions and macros$'
 grep '^rays:' "$work/err" >rays1
 render --stats -j 2 -o stats.png
 grep '^rays:' "$work/err" >rays2
 same_bytes rays1 rays2 "--stats ray counts with -j 1 and -j 2"
+# the evaluation's work: a macro that calls itself counts each call (1 + 2 + 4 + 8 = 15),
+# and a function's calls too
+printf 'def f(x) = x / 2\ndef tree(d) { sphere { <d, 0, 0>, f(1) }  if d > 0 { tree(d - 1)  tree(d - 1) } }\ntree(3)\n' \
+	>"$work/calls.scn"
+expect_status 0 "$SCN" render "$work/calls.scn" --stats -W 8 -H 8 -o "$work/calls.png" -q
+expect_grep "$work/err" '^evaluation: [1-9][0-9]* steps, 30 calls of functions and macros$'
 render -o plain.png
 grep -Eq '^(time|rays):' "$work/err" && fail "a render without --stats printed statistics: $(cat "$work/err")"
 render -q -o quiet.png

@@ -23,6 +23,24 @@ expect_count "$work/err" ': error: ' 1
 printf 'def m(n) { sphere { <n, 0, 0>, 1 }  if n < 255 { m(n + 1) } }\nm(1)\n' >"$work/deep_ok.scn"
 expect_capped 0 5 "$SCN" check "$work/deep_ok.scn"
 
+# recursion through bodies that nest 1000 deep: stopped by the stack's depth, not a crash
+gen "$work/deep_body_fn.scn" "
+print('def f(n) = n == 0 ? 0 : ' + '1 + (' * 990 + 'f(n - 1)' + ')' * 990)
+print('let a = f(255)')
+print('sphere { <a, 0, 0>, 1 }')
+"
+expect_capped 1 20 "$SCN" check "$work/deep_body_fn.scn"
+expect_grep "$work/err" "error: calls nested too deep for the stack: each holds deeply nested expressions or blocks$"
+expect_count "$work/err" ': error: ' 1
+gen "$work/deep_body_macro.scn" "
+print('def m(n) {')
+print('if n > 0 { ' * 900 + 'm(n - 1)' + ' }' * 900)
+print('}')
+print('m(255)')
+"
+expect_capped 1 20 "$SCN" check "$work/deep_body_macro.scn"
+expect_grep "$work/err" "error: calls nested too deep for the stack"
+
 # arrays that double: stopped at 10^7 elements alive, before they are made
 printf 'def grow(xs, k) = k == 0 ? xs : grow(xs + xs, k - 1)\nlet big = grow([1], 40)\nsphere { <len(big), 0, 0>, 1 }\n' \
 	>"$work/array_doubling.scn"

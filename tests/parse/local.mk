@@ -127,3 +127,5 @@ TESTS += tests/parse/lang_string.scn
 EXTRA_DIST += tests/parse/lang_string.scn tests/parse/lang_string.dump
 TESTS += tests/parse/lang_unused.scn
 EXTRA_DIST += tests/parse/lang_unused.scn tests/parse/lang_unused.dump tests/parse/lang_unused.err
+TESTS += tests/parse/lang_material_values.scn
+EXTRA_DIST += tests/parse/lang_material_values.scn tests/parse/lang_material_values.dump

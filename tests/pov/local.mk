@@ -19,6 +19,7 @@ POV_TESTS = \
 	tests/pov/checker_objects.scn \
 	tests/pov/checker_planes.scn \
 	tests/pov/csg_difference.scn \
+	tests/pov/lang_colonnade.scn \
 	tests/pov/csg_glass.scn \
 	tests/pov/csg_intersection.scn \
 	tests/pov/csg_inverse.scn \
