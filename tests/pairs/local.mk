@@ -14,3 +14,4 @@ EXTRA_DIST += tests/pairs/strings.scn tests/pairs/strings.flat.scn
 EXTRA_DIST += tests/pairs/ternary.scn tests/pairs/ternary.flat.scn
 EXTRA_DIST += tests/pairs/tree.scn tests/pairs/tree.flat.scn
 EXTRA_DIST += tests/pairs/material_values.scn tests/pairs/material_values.flat.scn
+EXTRA_DIST += tests/pairs/csg_first.scn tests/pairs/csg_first.flat.scn
