@@ -2,9 +2,9 @@
 " buffer with one letter per byte for its syntax group (the letters of sample.codes), and to
 " $OUT.messages Vim's messages, where an error in the files under test shows.
 let s:code = {'scnStatement': 'k', 'scnAttribute': 'a', 'scnFunction': 'f', 'scnConstant': 'c',
-      \ 'scnPovColour': 'P', 'scnDirective': 'D', 'scnNumber': 'n', 'scnOperator': 'o',
-      \ 'scnString': 's', 'scnEscape': 'e', 'scnBadEscape': 'E', 'scnVectorDelim': 'v',
-      \ 'scnTodo': 'T', 'scnComment': '/'}
+      \ 'scnDefName': 'F', 'scnPovColour': 'P', 'scnDirective': 'D', 'scnNumber': 'n',
+      \ 'scnOperator': 'o', 'scnCompare': 'o', 'scnString': 's', 'scnEscape': 'e',
+      \ 'scnBadEscape': 'E', 'scnVectorDelim': 'v', 'scnTodo': 'T', 'scnComment': '/'}
 let s:out = [&filetype]
 for s:l in range(1, line('$'))
   let s:s = ''

@@ -15,21 +15,41 @@ quoted() {
 	block "$1" "$2" | grep -o '"[a-z_0-9]*"' | tr -d '"'
 }
 
-# scn_words: prints one "CLASS WORD" a line: statement and attribute (lang/keywords.c's
-# names, grouped as lang/keywords.h groups them), function and constant (lang/builtins.c's
-# table: a constant takes no argument), povray (POV-Ray's colour words, which lang/lexer.l
-# reserves)
+# scn_words: prints one "CLASS WORD" a line: statement, attribute, operator and constant
+# (lang/keywords.c's names, grouped as lang/keywords.h's enum groups them under its comments:
+# of the group of operators and constants, an operator is a word whose token has a
+# precedence in lang/parser.y, as and, or and not have; true and false have none), function
+# and constant (lang/builtins.c's table: a constant takes no argument), povray (POV-Ray's
+# colour words, which lang/lexer.l reserves)
 scn_words() {
 	lang=$SCN_SRCDIR/lang
-	statements=$(sed -n '/\/\* statements \*\//,/\/\* attributes \*\//p' "$lang/keywords.h" |
-		grep -o 'KW_[A-Z_]*' | sed 's/^KW_//' | tr '[:upper:]\n' '[:lower:] ')
-	[ -n "$statements" ] || { echo "words.sh: no statements in lang/keywords.h" >&2; exit 99; }
+	# "GROUP WORD" for each KW_ of the enum, GROUP being the comment the lines follow
+	groups=$(block "$lang/keywords.h" 'enum kw {' | awk '
+		/^[ \t]*\/\*.*\*\/[ \t]*$/ { sub(/^[ \t]*\/\*[ \t]*/, ""); sub(/[ \t]*\*\/.*/, "")
+			group = $0; gsub(/ /, "_", group); next }
+		{ sub(/\/\*.*/, "")
+		  while (match($0, /KW_[A-Z_0-9]*/)) {
+			w = tolower(substr($0, RSTART + 3, RLENGTH - 3)); $0 = substr($0, RSTART + RLENGTH)
+			if (w != "count_all") print group, w } }')
+	[ -n "$groups" ] || { echo "words.sh: no keywords in lang/keywords.h" >&2; exit 99; }
+	# the tokens that have a precedence: %left OR, %precedence NOT, ...
+	ranked=" $(grep -E '^%(left|right|nonassoc|precedence)' "$lang/parser.y" | cut -d' ' -f2- | tr '\n' ' ') "
+	[ "$ranked" != "  " ] || { echo "words.sh: no precedences in lang/parser.y" >&2; exit 99; }
 	keywords=$(quoted "$lang/keywords.c" 'names[KW_COUNT_ALL] = {')
 	[ -n "$keywords" ] || { echo "words.sh: no keywords in lang/keywords.c" >&2; exit 99; }
 	for w in $keywords; do
-		case " $statements " in
-		*" $w "*) echo "statement $w" ;;
-		*) echo "attribute $w" ;;
+		group=$(echo "$groups" | awk -v w="$w" '$2 == w { print $1 }')
+		case $group in
+		statements) echo "statement $w" ;;
+		attributes) echo "attribute $w" ;;
+		operators_and_constants)
+			token=$(echo "$w" | tr '[:lower:]' '[:upper:]')
+			case $ranked in
+			*" $token "*) echo "operator $w" ;;
+			*) echo "constant $w" ;;
+			esac ;;
+		'') echo "words.sh: '$w' of lang/keywords.c is in no group of lang/keywords.h" >&2; exit 99 ;;
+		*) echo "words.sh: lang/keywords.h has a group '$group' (of '$w') that lib.sh does not know" >&2; exit 99 ;;
 		esac
 	done
 	builtins=$(block "$lang/builtins.c" 'table[BUILTIN_COUNT] = {' |
@@ -61,7 +81,8 @@ words_scene() {
 expect_words() {
 	paste -d ' ' "$work/words" "$2" | while read -r class word got; do
 		case $class in
-		statement) c=k ;; attribute) c=a ;; function) c=f ;; constant) c=c ;; povray) c=P ;;
+		statement) c=k ;; attribute) c=a ;; operator) c=o ;; function) c=f ;; constant) c=c ;;
+		povray) c=P ;;
 		esac
 		[ "$got" = "$(printf "%${#word}s" | tr ' ' "$c")" ] || echo "FAIL: $1 highlights the $class '$word' as '$got'"
 	done >"$work/bad"

@@ -1,10 +1,10 @@
 """textmate.py: for textmate.sh: a small TextMate tokenizer (match and begin/end rules, their
-captures, includes of the repository and $self) that prints, for each line of a file, one
-letter per character for the class of its innermost scope that has one (the letters of
-sample.codes); with --words, the words that the grammar's keyword rules list, one
-"CLASS WORD" a line. Python's re stands in for Oniguruma: the grammar keeps to what both
-read alike. Exit status 1 with a message when the grammar does not parse or has a rule this
-tokenizer does not know.
+captures, match rules applied to a capture, includes of the repository and $self) that
+prints, for each line of a file, one letter per character for the class of its innermost
+scope that has one (the letters of sample.codes); with --words, the words that the grammar's
+keyword rules list, one "CLASS WORD" a line. Python's re stands in for Oniguruma: the
+grammar keeps to what both read alike. Exit status 1 with a message when the grammar does
+not parse or has a rule this tokenizer does not know.
 
 usage: textmate.py GRAMMAR FILE | textmate.py --words GRAMMAR"""
 import json
@@ -13,12 +13,14 @@ import sys
 
 # scope prefix -> letter; the classes of words by letter
 LETTERS = [("keyword.control.statement", "k"), ("entity.other.attribute-name", "a"),
-           ("support.function.builtin", "f"), ("constant.language", "c"),
+           ("support.function.builtin", "f"), ("entity.name.function", "F"),
+           ("constant.language", "c"),
            ("invalid.illegal.povray", "P"), ("invalid.illegal.directive", "D"),
            ("constant.numeric", "n"), ("keyword.operator", "o"), ("string.quoted", "s"),
            ("constant.character.escape", "e"), ("invalid.illegal.escape", "E"),
            ("punctuation.definition.vector", "v"), ("keyword.other.todo", "T"), ("comment", "/")]
-CLASSES = {"k": "statement", "a": "attribute", "f": "function", "c": "constant", "P": "povray"}
+CLASSES = {"k": "statement", "a": "attribute", "o": "operator", "f": "function", "c": "constant",
+           "P": "povray"}
 WORD_LIST = re.compile(r"\\b\(\?:([a-z_0-9|]+)\)\\b")
 
 
@@ -85,11 +87,8 @@ class Grammar:
                 paint(pos, m.start(), outer)
                 names = outer + ([r["name"]] if kind != "end" and "name" in r else [])
                 key = "endCaptures" if kind == "end" else "beginCaptures" if "begin" in r else "captures"
-                caps = r.get(key, r.get("captures", {}))
                 paint(m.start(), m.end(), names)
-                for group, cap in caps.items():
-                    if m.start(int(group)) >= 0:
-                        paint(m.start(int(group)), m.end(int(group)), names + [cap["name"]])
+                self.captures(line, m, r.get(key, r.get("captures", {})), names, paint)
                 if kind == "end":
                     stack.pop()
                 elif "begin" in r:
@@ -99,9 +98,36 @@ class Grammar:
             out.append(scopes)
         return out
 
+    def captures(self, line, m, caps, names, paint):
+        """paints the groups of match m: each its name, and a group's patterns (match rules)
+        over its text, as vscode-textmate does: the line up to the group's end, from its start"""
+        for group, cap in caps.items():
+            a, b = m.start(int(group)), m.end(int(group))
+            if a < 0:
+                continue
+            inner = names + ([cap["name"]] if "name" in cap else [])
+            paint(a, b, inner)
+            pos, rules = a, self.rules(cap.get("patterns", []))
+            while rules:
+                found = [(r, self.rx(r["match"]).search(line, pos, b)) for r in rules if "match" in r]
+                if len(found) != len(rules):
+                    sys.exit("textmate.py: a capture's patterns may only be match rules")
+                found = [(r, f) for r, f in found if f]
+                if not found:
+                    break
+                r, f = min(found, key=lambda rf: rf[1].start())  # the earliest; on a tie, the first
+                if f.end() == f.start():
+                    sys.exit(f"textmate.py: rule {r} matches the empty string")
+                names_r = inner + ([r["name"]] if "name" in r else [])
+                paint(f.start(), f.end(), names_r)
+                self.captures(line, f, r.get("captures", {}), names_r, paint)
+                pos = f.end()
+
     def words(self):
         """(class, word) of each word of the keyword rules"""
         for r in self.rules(self.repo["keywords"]["patterns"]):
+            if "name" not in r:
+                continue  # a rule that gives classes by its captures
             ch = letter(r["name"])
             m = WORD_LIST.fullmatch(r["match"])
             if ch == "D":

@@ -34,10 +34,16 @@ expect_words Vim "$work/letters"
 sed -n 's/^syn keyword scn//p' "$SCN_SRCDIR/editors/vim/syntax/scn.vim" | grep -v '^Todo ' |
 	while read -r group words; do
 		case $group in
-		Statement) class=statement ;; Attribute) class=attribute ;; Function) class=function ;;
-		Constant) class=constant ;; PovColour) class=povray ;; *) class="scn$group?" ;;
+		Statement) class=statement ;; Attribute) class=attribute ;; Operator) class=operator ;;
+		Function) class=function ;; Constant) class=constant ;; PovColour) class=povray ;;
+		*) class="scn$group?" ;;
 		esac
-		for w in $words; do echo "$class $w"; done
+		for w in $words; do
+			case $w in # the options of a keyword line
+			*=* | contained | transparent | skipwhite | skipnl | skipempty | conceal) ;;
+			*) echo "$class $w" ;;
+			esac
+		done
 	done >"$work/listed"
 expect_listed editors/vim/syntax/scn.vim "$work/listed"
 finish

@@ -26,8 +26,10 @@ fi
 out=$top_builddir/tests/fuzz
 obj=$out/obj
 mkdir -p "$obj"
+# FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION (the fuzzing world's convention): limits that
+# would let one input run past the 10 s timeout are lower (lang/eval.h)
 flags="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all \
--std=c11 -Wall -Wextra -ffp-contract=off -pthread -D_XOPEN_SOURCE=700 \
+-std=c11 -Wall -Wextra -ffp-contract=off -pthread -D_XOPEN_SOURCE=700 -DFUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION \
 -I$top_builddir -I$top_srcdir/tests/fuzz $FUZZ_LIB_CFLAGS"
 
 # The libraries, compiled again with the sanitizers and coverage (only what changed).
