@@ -13,3 +13,7 @@ EXAMPLES += examples/sampling.scn
 EXAMPLES += examples/loops.scn
 EXAMPLES += examples/temple.scn
 EXTRA_DIST += examples/sky.png examples/sky.pov examples/temple.png
+EXAMPLES += examples/tree.scn
+EXAMPLES += examples/colonnade.scn
+EXAMPLES += examples/orbit.scn
+EXTRA_DIST += examples/tree.png examples/colonnade.png

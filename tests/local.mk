@@ -27,3 +27,4 @@ include tests/layout/local.mk
 include tests/bench/local.mk
 include tests/editors/local.mk
 include tests/mesh/local.mk
+include tests/pairs/local.mk
