@@ -9,28 +9,29 @@
 #include "scene_desc.h"
 
 /* Limits of LANGUAGE.md section 6. */
-#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
-#define LANG_MAX_ITERATIONS 100000  /* as LANG_MAX_STEPS below */
-#else
 #define LANG_MAX_ITERATIONS 10000000
-#endif
 #define LANG_MAX_DEPTH 256
 #define LANG_MAX_PIXELS (1 << 28)
 /* Not in LANGUAGE.md: the iteration limit bounds loops, but a loop multiplies the work
  * and the objects of its body; these bound the whole evaluation. */
 #define LANG_MAX_OBJECTS 10000000
-#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
-/* A macro that calls itself twice reaches the limit on steps from a few lines, in 20 s,
- * and loops their limit in seconds under the sanitizers: past the fuzzer's timeout for
- * one input. There they come a hundred times sooner. */
-#define LANG_MAX_STEPS 5000000
-#else
 #define LANG_MAX_STEPS 500000000
-#endif
 /* LANGUAGE.md section 10: calls nest at most this deep; the arrays and strings alive at
  * once hold at most this many elements (a string's bytes count as elements). */
 #define LANG_MAX_CALL_DEPTH 256
 #define LANG_MAX_ELEMENTS 10000000
+
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+/* A macro that calls itself twice reaches the limit on steps from a few lines, in 20 s,
+ * and loops and objects theirs in seconds under the sanitizers: past the fuzzer's timeout
+ * for one input. There the limits on the whole evaluation come a hundred times sooner. */
+#undef LANG_MAX_ITERATIONS
+#undef LANG_MAX_OBJECTS
+#undef LANG_MAX_STEPS
+#define LANG_MAX_ITERATIONS 100000
+#define LANG_MAX_OBJECTS 100000
+#define LANG_MAX_STEPS 1000000
+#endif
 
 /* What an evaluation did, for --stats: expressions evaluated (the steps that
  * LANG_MAX_STEPS bounds) and calls of the scene's functions and macros. */
