@@ -162,7 +162,6 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 	}
 }
 
-
 /* Too many errors, or a limit on the whole evaluation reached: nothing more runs. */
 static bool stopped(const struct evaluator *ev)
 {
