@@ -404,7 +404,7 @@ static void check_if(struct checker *c, struct ast *s)
 	char why[160];
 	struct ast *cond = s->u.cond_stmt.cond;
 	enum ast_type t = check_expr(c, cond);
-	if (t != TYPE_NONE && !type_condition(t, why, sizeof why))
+	if (t != TYPE_NONE && !value_type_condition(t, why, sizeof why))
 		diag_error(c->diag, cond->span, "%s", why);
 	/* the branches are alternatives: each may hold the scene's one camera */
 	struct { bool seen; struct span at; } before[NONCE], then[NONCE];
@@ -538,7 +538,7 @@ static void check_parts(struct checker *c, struct ast *s)
 			enum ast_type t = check_expr(c, s->u.loop.from);
 			if (t != TYPE_NONE && t != TYPE_ARRAY && t != TYPE_ANY)
 				diag_error(c->diag, s->u.loop.from->span, "a for loop runs over a range A .. B or an array, "
-				           "found %s", type_name(t));
+				           "found %s", value_type_name(t));
 			var = TYPE_ANY;
 		}
 		if (c->loop_depth == LANG_MAX_NESTING) { /* includes can nest loops past one file's brackets */

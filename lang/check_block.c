@@ -118,9 +118,9 @@ void check_value(struct checker *c, struct ast *e, enum shape shape, const char 
 	if (t == TYPE_PIGMENT)
 		diag_error(c->diag, e->span, "checker(...) can only be the value of diffuse");
 	else if (strchr(attr, ' ')) /* a phrase ("the sphere's radius"), not an attribute's name */
-		diag_error(c->diag, e->span, "%s must be %s, found %s", attr, want, type_name(t));
+		diag_error(c->diag, e->span, "%s must be %s, found %s", attr, want, value_type_name(t));
 	else
-		diag_error(c->diag, e->span, "'%s' takes %s, found %s", attr, want, type_name(t));
+		diag_error(c->diag, e->span, "'%s' takes %s, found %s", attr, want, value_type_name(t));
 }
 
 /* A name argument (material, like, pattern): a lone identifier. */

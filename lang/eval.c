@@ -206,7 +206,7 @@ static void eval_for(struct evaluator *ev, struct ast *s)
 			return;
 		if (a.type != TYPE_ARRAY) {
 			eval_error(ev, s->u.loop.from, "a for loop runs over a range A .. B or an array, found %s",
-			           type_name(a.type));
+			           value_type_name(a.type));
 			return;
 		}
 		if (!more_iterations(ev, s, s->u.loop.from->span, a.len))

@@ -109,12 +109,12 @@ static bool boolean(struct evaluator *ev, struct ast *e, const struct value *v, 
 	if (v->type == TYPE_BOOL)
 		return true;
 	if (op == '?')
-		type_condition(v->type, why, sizeof why);
+		value_type_condition(v->type, why, sizeof why);
 	else if (op == '!')
-		type_unary('!', v->type, why, sizeof why);
+		value_type_unary('!', v->type, why, sizeof why);
 	else {
 		enum blame blame;
-		type_binary(op, v->type, TYPE_BOOL, why, sizeof why, &blame);
+		value_type_binary(op, v->type, TYPE_BOOL, why, sizeof why, &blame);
 	}
 	eval_error(ev, e, "%s", why);
 	return false;
@@ -182,7 +182,7 @@ static bool eval_binary(struct evaluator *ev, struct ast *e, struct value *out)
 	if (l.type != TYPE_NUM || r.type != TYPE_NUM) {
 		char why[160];
 		enum blame blame;
-		if ((t = type_binary(op, l.type, r.type, why, sizeof why, &blame)) == TYPE_NONE)
+		if ((t = value_type_binary(op, l.type, r.type, why, sizeof why, &blame)) == TYPE_NONE)
 			return type_error(ev, e, blame, why);
 	}
 	out->type = (uint8_t)t;
@@ -209,12 +209,12 @@ static bool eval_index(struct evaluator *ev, struct ast *e, struct value *out)
 		return false;
 	char nb[32];
 	if (a.type != TYPE_ARRAY) {
-		eval_error(ev, e->u.bin.l, "only an array can be indexed, found %s%s", type_name(a.type),
+		eval_error(ev, e->u.bin.l, "only an array can be indexed, found %s%s", value_type_name(a.type),
 		           a.type == TYPE_VEC ? " (a vector's components are .x, .y and .z)" : "");
 		return false;
 	}
 	if (i.type != TYPE_NUM) {
-		eval_error(ev, e->u.bin.r, "an index must be a number, found %s", type_name(i.type));
+		eval_error(ev, e->u.bin.r, "an index must be a number, found %s", value_type_name(i.type));
 		return false;
 	}
 	double k = i.v[0];
@@ -243,7 +243,7 @@ static enum ast_type dynamic_type(struct evaluator *ev, struct ast *e, const str
 	const char *why = NULL;
 	enum ast_type t = builtin_type(e->u.call.fn, types, (int)n, &bad, &why);
 	if (t == TYPE_NONE)
-		eval_error(ev, e->u.call.args.v[bad], "%s, found %s", why, type_name(types[bad]));
+		eval_error(ev, e->u.call.args.v[bad], "%s, found %s", why, value_type_name(types[bad]));
 	if (types != small)
 		free(types);
 	return t;
@@ -335,7 +335,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 			if (!operand(ev, e->u.vec[k], &c))
 				return false;
 			if (c.type != TYPE_NUM) {
-				eval_error(ev, e->u.vec[k], "a vector's components must be numbers, found %s", type_name(c.type));
+				eval_error(ev, e->u.vec[k], "a vector's components must be numbers, found %s", value_type_name(c.type));
 				return false;
 			}
 			out->v[k] = c.v[0];
@@ -370,7 +370,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 	case AST_NEG: {
 		if (!eval_expr(ev, e->u.bin.l, out))
 			return false;
-		if (type_unary('-', out->type, why, sizeof why) == TYPE_NONE) {
+		if (value_type_unary('-', out->type, why, sizeof why) == TYPE_NONE) {
 			eval_error(ev, e->u.bin.l, "%s", why);
 			return false;
 		}
@@ -399,7 +399,7 @@ bool eval_expr(struct evaluator *ev, struct ast *e, struct value *out)
 			return false;
 		if (v.type != TYPE_VEC) {
 			eval_error(ev, e->u.member.e, "'.%s' selects from a vector, but this is %s", e->u.member.name,
-			           type_name(v.type));
+			           value_type_name(v.type));
 			return false;
 		}
 		out->type = TYPE_NUM;
@@ -423,7 +423,7 @@ static bool value_of(struct evaluator *ev, struct ast *e, unsigned want, const c
 		return false;
 	if (want & 1u << v->type)
 		return true;
-	eval_error(ev, e, "expected %s, found %s", what, type_name(v->type));
+	eval_error(ev, e, "expected %s, found %s", what, value_type_name(v->type));
 	return false;
 }
 

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *type_name(enum ast_type t)
+const char *value_type_name(enum ast_type t)
 {
 	switch (t) {
 	case TYPE_NUM: return "a number";
@@ -48,7 +48,7 @@ static bool arithmetic(enum ast_type t)
 /* The message for a condition that is not a boolean, after its first words. */
 static void not_boolean(char *why, size_t size, const char *what, enum ast_type t)
 {
-	snprintf(why, size, "%s must be true or false, found %s%s", what, type_name(t),
+	snprintf(why, size, "%s must be true or false, found %s%s", what, value_type_name(t),
 	         t == TYPE_NUM ? "; compare it, as in x != 0" : "");
 }
 
@@ -61,24 +61,24 @@ static bool operand_ok(char op, enum ast_type t, char *why, size_t size)
 	case '+':
 		if (arithmetic(t) || t == TYPE_STR || t == TYPE_ARRAY)
 			return true;
-		snprintf(why, size, "'+' adds numbers and vectors and joins strings or arrays, found %s", type_name(t));
+		snprintf(why, size, "'+' adds numbers and vectors and joins strings or arrays, found %s", value_type_name(t));
 		return false;
 	case '-': case '*': case '/':
 		if (arithmetic(t))
 			return true;
-		snprintf(why, size, "expected a number or a vector, found %s%s", type_name(t),
+		snprintf(why, size, "expected a number or a vector, found %s%s", value_type_name(t),
 		         t == TYPE_STR || t == TYPE_ARRAY ? " (only '+' joins strings and arrays)" : "");
 		return false;
 	case '<': case '>': case OP_LE: case OP_GE:
 		if (t == TYPE_NUM)
 			return true;
-		snprintf(why, size, "'%s' compares numbers, found %s", op_text(op), type_name(t));
+		snprintf(why, size, "'%s' compares numbers, found %s", op_text(op), value_type_name(t));
 		return false;
 	case OP_EQ: case OP_NE:
 		if (t != TYPE_ARRAY && t != TYPE_PIGMENT && t != TYPE_MATERIAL)
 			return true;
 		snprintf(why, size, "'%s' compares numbers, vectors, strings and booleans, found %s", op_text(op),
-		         type_name(t));
+		         value_type_name(t));
 		return false;
 	default: { /* and, or */
 		if (t == TYPE_BOOL)
@@ -91,7 +91,7 @@ static bool operand_ok(char op, enum ast_type t, char *why, size_t size)
 	}
 }
 
-enum ast_type type_binary(char op, enum ast_type l, enum ast_type r, char *why, size_t size, enum blame *blame)
+enum ast_type value_type_binary(char op, enum ast_type l, enum ast_type r, char *why, size_t size, enum blame *blame)
 {
 	if (!operand_ok(op, l, why, size)) {
 		*blame = BLAME_LEFT;
@@ -108,8 +108,8 @@ enum ast_type type_binary(char op, enum ast_type l, enum ast_type r, char *why, 
 		             !(arithmetic(l) && arithmetic(r));
 		if (mixed) {
 			*blame = BLAME_WHOLE;
-			snprintf(why, size, "'%s' compares values of one kind, not %s and %s", op_text(op), type_name(l),
-			         type_name(r));
+			snprintf(why, size, "'%s' compares values of one kind, not %s and %s", op_text(op), value_type_name(l),
+			         value_type_name(r));
 			return TYPE_NONE;
 		}
 		return TYPE_BOOL;
@@ -125,15 +125,15 @@ enum ast_type type_binary(char op, enum ast_type l, enum ast_type r, char *why, 
 	enum ast_type joined = left ? r : l, odd = left ? l : r;
 	*blame = left ? BLAME_LEFT : BLAME_RIGHT;
 	if (joined == TYPE_STR)
-		snprintf(why, size, "'+' joins a string only to a string, found %s%s", type_name(odd),
+		snprintf(why, size, "'+' joins a string only to a string, found %s%s", value_type_name(odd),
 		         odd == TYPE_NUM ? "; write str(x) for a number's text" : "");
 	else
 		snprintf(why, size, "'+' joins an array only to an array, found %s; write [x] for an array of one",
-		         type_name(odd));
+		         value_type_name(odd));
 	return TYPE_NONE;
 }
 
-enum ast_type type_unary(char op, enum ast_type t, char *why, size_t size)
+enum ast_type value_type_unary(char op, enum ast_type t, char *why, size_t size)
 {
 	if (op == '!') {
 		if (t == TYPE_BOOL || t == TYPE_ANY)
@@ -143,11 +143,11 @@ enum ast_type type_unary(char op, enum ast_type t, char *why, size_t size)
 	}
 	if (arithmetic(t) || t == TYPE_ANY)
 		return t;
-	snprintf(why, size, "expected a number or a vector, found %s", type_name(t));
+	snprintf(why, size, "expected a number or a vector, found %s", value_type_name(t));
 	return TYPE_NONE;
 }
 
-bool type_condition(enum ast_type t, char *why, size_t size)
+bool value_type_condition(enum ast_type t, char *why, size_t size)
 {
 	if (t == TYPE_BOOL || t == TYPE_ANY)
 		return true;
