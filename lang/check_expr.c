@@ -90,15 +90,19 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 {
 	const char *name = e->u.ident.name;
 	struct binding *b = names_lookup(c, name);
+	int fn = b ? -1 : builtin_lookup(name);
 	if (b) {
 		use(c, b);
 		e->u.ident.ref = b;
+	}
+	if (b ? b->kind == BIND_FUNCTION : fn >= 0 && builtin_is_function(fn)) {
+		diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
+		return TYPE_NONE;
+	}
+	if (b) {
 		switch (b->kind) {
 		case BIND_MATERIAL: /* a value to pass on: to a macro, into an array */
 			return TYPE_MATERIAL;
-		case BIND_FUNCTION:
-			diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
-			return TYPE_NONE;
 		case BIND_MACRO:
 			diag_error(c->diag, e->span, "'%s' is a macro: it makes objects where it is called as a statement, "
 			           "%s(...), and has no value", name, name);
@@ -107,14 +111,9 @@ static enum ast_type check_ident(struct checker *c, struct ast *e)
 			return b->type;
 		}
 	}
-	int fn = builtin_lookup(name);
-	if (fn >= CONST_PI) {
+	if (fn >= 0) { /* pi, clock, frame */
 		e->u.ident.builtin = fn;
 		return TYPE_NUM;
-	}
-	if (fn >= 0) {
-		diag_error(c->diag, e->span, "'%s' is a function; call it as %s(...)", name, name);
-		return TYPE_NONE;
 	}
 	unknown_name(c, e->span, name, NAMES_VALUES);
 	c->tainted = true; /* also when unknown_name says nothing (a name an unread include may define) */
@@ -200,7 +199,7 @@ static enum ast_type check_call(struct checker *c, struct ast *e)
 	const char *why = NULL;
 	enum ast_type t = builtin_type(fn, types, n < 64 ? n : 64, &bad, &why);
 	if (t == TYPE_NONE)
-		diag_error(c->diag, args->v[bad]->span, "%s, found %s", why, type_name(types[bad]));
+		diag_error(c->diag, args->v[bad]->span, "%s, found %s", why, value_type_name(types[bad]));
 	return t;
 }
 
@@ -234,7 +233,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 				ok = false;
 			else if (t != TYPE_NUM && t != TYPE_ANY) {
 				diag_error(c->diag, e->u.vec[k]->span, "a vector's components must be numbers, found %s",
-				           type_name(t));
+				           value_type_name(t));
 				ok = false;
 			}
 		}
@@ -250,7 +249,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		enum ast_type t = check_expr(c, e->u.bin.l);
 		if (t == TYPE_NONE)
 			return TYPE_NONE;
-		t = type_unary(e->u.bin.op, t, why, sizeof why);
+		t = value_type_unary(e->u.bin.op, t, why, sizeof why);
 		return t == TYPE_NONE ? reported(c, e->u.bin.l->span, why) : t;
 	}
 	case AST_BINARY: {
@@ -259,7 +258,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		if (l == TYPE_NONE || r == TYPE_NONE)
 			return TYPE_NONE;
 		enum blame blame;
-		enum ast_type t = type_binary(e->u.bin.op, l, r, why, sizeof why, &blame);
+		enum ast_type t = value_type_binary(e->u.bin.op, l, r, why, sizeof why, &blame);
 		if (t == TYPE_NONE)
 			reported(c, blame == BLAME_LEFT ? e->u.bin.l->span : blame == BLAME_RIGHT ? e->u.bin.r->span : e->span, why);
 		return t;
@@ -268,7 +267,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		enum ast_type t = check_expr(c, e->u.cond.c);
 		enum ast_type a = check_expr(c, e->u.cond.a);
 		enum ast_type b = check_expr(c, e->u.cond.b);
-		if (t != TYPE_NONE && !type_condition(t, why, sizeof why))
+		if (t != TYPE_NONE && !value_type_condition(t, why, sizeof why))
 			return reported(c, e->u.cond.c->span, why);
 		if (t == TYPE_NONE || a == TYPE_NONE || b == TYPE_NONE)
 			return TYPE_NONE;
@@ -281,12 +280,12 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 		enum ast_type t = check_expr(c, e->u.bin.l);
 		enum ast_type i = check_expr(c, e->u.bin.r);
 		if (t != TYPE_NONE && t != TYPE_ARRAY && t != TYPE_ANY) {
-			snprintf(why, sizeof why, "only an array can be indexed, found %s%s", type_name(t),
+			snprintf(why, sizeof why, "only an array can be indexed, found %s%s", value_type_name(t),
 			         t == TYPE_VEC ? " (a vector's components are .x, .y and .z)" : "");
 			return reported(c, e->u.bin.l->span, why);
 		}
 		if (i != TYPE_NONE && i != TYPE_NUM && i != TYPE_ANY) {
-			snprintf(why, sizeof why, "an index must be a number, found %s", type_name(i));
+			snprintf(why, sizeof why, "an index must be a number, found %s", value_type_name(i));
 			return reported(c, e->u.bin.r->span, why);
 		}
 		return t == TYPE_NONE || i == TYPE_NONE ? TYPE_NONE : TYPE_ANY;
@@ -304,7 +303,7 @@ static enum ast_type check_expr_inner(struct checker *c, struct ast *e)
 			return TYPE_NONE;
 		if (t != TYPE_VEC && t != TYPE_ANY) {
 			diag_error(c->diag, e->u.member.e->span, "'.%s' selects from a vector, but this is %s", name,
-			           type_name(t));
+			           value_type_name(t));
 			return TYPE_NONE;
 		}
 		return TYPE_NUM;
