@@ -18,6 +18,7 @@ static void material_defaults(struct material_desc *m)
 	m->diffuse[0] = m->diffuse[1] = m->diffuse[2] = 0.8;
 	m->shininess = 50;
 	m->ior = 1;
+	m->pattern = m->normal = -1;
 }
 
 int eval_material(struct evaluator *ev, struct ast_block *block, const char *name, struct span sp)
@@ -37,14 +38,15 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 		case KW_DIFFUSE: {
 			struct ast *e = arg0(it);
 			if (e->type != TYPE_PIGMENT) {
-				m.checker = false;
+				m.pigment = PIGMENT_COLOR;
 				vec_of(ev, e, m.diffuse);
 				break;
 			}
 			struct ast_list *a = &e->u.call.args;
-			m.checker = vec_of(ev, a->v[0], m.diffuse) && vec_of(ev, a->v[1], m.diffuse2) &&
-			            num_of(ev, a->v[2], &m.checker_size);
-			if (m.checker && !(m.checker_size > 0))
+			bool ok = vec_of(ev, a->v[0], m.diffuse) && vec_of(ev, a->v[1], m.diffuse2) &&
+			          num_of(ev, a->v[2], &m.checker_size);
+			m.pigment = ok ? PIGMENT_CHECKER : PIGMENT_COLOR;
+			if (ok && !(m.checker_size > 0))
 				eval_error(ev, a->v[2], "the checker's size must be positive, not %s", value_number_text(m.checker_size, nb));
 			break;
 		}

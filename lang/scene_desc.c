@@ -13,6 +13,17 @@ const char *scene_desc_pattern_name(enum sample_pattern p)
 	return pattern_names[p];
 }
 
+/* ORDER PATTERN_NAME */
+static const char *const texture_names[PAT_COUNT] = {
+	"gradient", "radial", "onion", "wood", "marble", "leopard", "agate", "bozo", "granite", "spotted",
+	"bumps", "dents", "ripples", "waves", "wrinkles",
+};
+
+const char *scene_desc_texture_name(enum pattern_name p)
+{
+	return texture_names[p];
+}
+
 static void set3(double v[3], double x, double y, double z)
 {
 	v[0] = x;
@@ -47,7 +58,15 @@ void scene_desc_free(struct scene_desc *s)
 		free(m->vertices);
 		free(m->faces);
 		free(m->normals);
+		free(m->uvs);
 	}
+	for (size_t i = 0; i < s->nimages; i++) {
+		free(s->images[i].file);
+		free(s->images[i].path);
+	}
+	free(s->patterns);
+	free(s->color_maps);
+	free(s->images);
 	free(s->skybox.image);
 	free(s->skybox.image_path);
 	free(s->lights);
@@ -92,7 +111,7 @@ static void dump_material(const struct material_desc *m, size_t i, FILE *out)
 	fprintf(out, "material %zu", i);
 	if (m->name)
 		fprintf(out, " '%s'", m->name);
-	if (m->checker) {
+	if (m->pigment == PIGMENT_CHECKER) {
 		fputs(" diffuse checker(", out);
 		vec(out, m->diffuse);
 		fputs(", ", out);

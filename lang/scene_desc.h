@@ -29,10 +29,58 @@ struct light_desc {
 	struct span span;
 };
 
+/* LANGUAGE.md section 11. The names of patterns: the ten a diffuse pattern takes, then the
+ * five a normal takes. ORDER PATTERN_NAME: scene_desc.c's texture_names follows it. */
+enum pattern_name {
+	PAT_GRADIENT, PAT_RADIAL, PAT_ONION, PAT_WOOD, PAT_MARBLE, PAT_LEOPARD, PAT_AGATE, PAT_BOZO,
+	PAT_GRANITE, PAT_SPOTTED,
+	PAT_BUMPS, PAT_DENTS, PAT_RIPPLES, PAT_WAVES, PAT_WRINKLES,
+	PAT_COUNT
+};
+#define PAT_FIRST_NORMAL PAT_BUMPS
+
+/* One entry of a colour map: the colour at a position in [0, 1]. */
+struct color_map_entry {
+	double position, color[3];
+};
+
+/* `pattern { ... }` (a diffuse pigment) or `normal { ... }` (a bump pattern). */
+struct pattern_desc {
+	uint8_t name;                  /* enum pattern_name */
+	double vector[3];              /* gradient's vector, as written */
+	double amount;                 /* a normal's depth (`bumps 0.6`) */
+	uint32_t map, nmap;            /* its colour map: entries [map, map + nmap) of
+	                                * scene_desc.color_maps, positions rising; nmap 0: black
+	                                * at 0 to white at 1 */
+	double frequency, phase;       /* 1 and 0 when not given */
+	double turbulence[3];          /* all 0: no turbulence */
+	int octaves;                   /* 6 */
+	double omega, lambda;          /* 0.5 and 2 */
+	int xform;                     /* its own transforms, into xforms; -1: none */
+	struct span span;
+};
+
+enum image_map_kind { IMAGE_MAP_PLANAR, IMAGE_MAP_SPHERICAL, IMAGE_MAP_CYLINDRICAL, IMAGE_MAP_UV };
+
+/* `image { "FILE" ... }`, a diffuse pigment. */
+struct image_desc {
+	char *file, *path;             /* as written, and resolved against the scene's directory */
+	uint8_t map;                   /* enum image_map_kind */
+	bool bilinear;                 /* interpolate bilinear; else the nearest texel */
+	bool once;                     /* no repeats: outside the image, the default diffuse */
+	int xform;                     /* its own transforms, into xforms; -1: none */
+	struct span span;
+};
+
+/* What `diffuse` holds. */
+enum pigment_kind { PIGMENT_COLOR, PIGMENT_CHECKER, PIGMENT_PATTERN, PIGMENT_IMAGE };
+
 struct material_desc {
 	char *name;                    /* NULL for an inline material */
-	bool checker;
-	double diffuse[3], diffuse2[3], checker_size;
+	uint8_t pigment;               /* enum pigment_kind */
+	int pattern;                   /* PIGMENT_PATTERN: into patterns; PIGMENT_IMAGE: into images */
+	int normal;                    /* into patterns (a normal's name), or -1: none */
+	double diffuse[3], diffuse2[3], checker_size;   /* PIGMENT_COLOR, PIGMENT_CHECKER */
 	double specular[3], shininess, reflect[3], transmit[3], ior, emit[3];
 	bool fresnel;
 	bool used;                     /* some object refers to it */
@@ -53,6 +101,9 @@ struct mesh_desc {
 	size_t nfaces;
 	double (*normals)[3];          /* one per vertex, or NULL */
 	size_t nnormals;
+	double (*uvs)[2];              /* `uvs { }`: one per vertex, or NULL */
+	size_t nuvs;
+	bool bilinear;                 /* `interpolate bilinear`: the file's textures looked up so */
 	bool has_inside_vector;        /* inside_vector given: the mesh is a solid */
 	double inside_vector[3];
 	struct span file_span;
@@ -85,6 +136,8 @@ struct object_desc {
 	bool inverse : 1;              /* inside and outside swapped (a solid, or a CSG of solids) */
 	bool solid : 1;                /* it has an inside: LANGUAGE.md section 9's list (a mesh
 	                                * when its mesh_desc has an inside_vector) */
+	bool inherited : 1;            /* material is an enclosing CSG's, not its own (a mesh
+	                                * file's own materials win over an inherited one) */
 	union {
 		struct { double center[3], radius; } sphere;
 		struct { double normal[3], offset; } plane;
@@ -136,6 +189,12 @@ struct scene_desc {
 	size_t nxforms, cap_xforms;
 	struct mesh_desc *meshes;
 	size_t nmeshes, cap_meshes;
+	struct pattern_desc *patterns;
+	size_t npatterns, cap_patterns;
+	struct color_map_entry *color_maps;
+	size_t ncolor_maps, cap_color_maps;
+	struct image_desc *images;
+	size_t nimages, cap_images;
 	/* the moment of an animation it was evaluated at (LANGUAGE.md 13): what the names
 	 * clock and frame hold; 0 and 0 for a still */
 	double clock;
@@ -148,5 +207,7 @@ void scene_desc_free(struct scene_desc *s);
 /* Writes a canonical text form, one line an entity, for golden tests. */
 void scene_desc_dump(const struct scene_desc *s, FILE *out);
 const char *scene_desc_pattern_name(enum sample_pattern p);
+/* The name of pattern p as written in a scene ("marble"). */
+const char *scene_desc_texture_name(enum pattern_name p);
 
 #endif

@@ -71,7 +71,7 @@ static struct material lower_material(const struct material_desc *m)
 {
 	struct material out = {
 		.diffuse = v3a(m->diffuse), .diffuse2 = v3a(m->diffuse2), .checker_size = m->checker_size,
-		.checker = m->checker, .fresnel = m->fresnel, .specular = v3a(m->specular),
+		.checker = m->pigment == PIGMENT_CHECKER, .fresnel = m->fresnel, .specular = v3a(m->specular),
 		.reflect = v3a(m->reflect), .transmit = v3a(m->transmit), .emit = v3a(m->emit),
 		.shininess = m->shininess, .ior = m->ior,
 	};
