@@ -68,12 +68,16 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 		bool file = stmt->u.stmt.block->args.n > 0;
 		if (file)
 			check_value(c, stmt->u.stmt.block->args.v[0], S_STR, "a mesh's file name");
-		if (file && (seen[KW_VERTICES] || seen[KW_FACES] || seen[KW_NORMALS])) {
-			struct ast *x = seen[KW_VERTICES] ? seen[KW_VERTICES] : seen[KW_FACES] ? seen[KW_FACES] : seen[KW_NORMALS];
+		if (file && (seen[KW_VERTICES] || seen[KW_FACES] || seen[KW_NORMALS] || seen[KW_UVS])) {
+			struct ast *x = seen[KW_VERTICES] ? seen[KW_VERTICES] : seen[KW_FACES] ? seen[KW_FACES]
+			              : seen[KW_NORMALS] ? seen[KW_NORMALS] : seen[KW_UVS];
 			diag_error(c->diag, x->u.item.name_span, "a mesh read from a file takes no '%s'", item_name(x));
 		} else if (!file && (!seen[KW_VERTICES] || !seen[KW_FACES]) && complete) {
 			diag_error(c->diag, at, "a mesh needs a file name, or vertices { ... } and faces { ... }");
 		}
+		if (!file && seen[KW_INTERPOLATE]) /* an inline mesh has no textures of its own */
+			diag_error(c->diag, seen[KW_INTERPOLATE]->u.item.name_span,
+			           "'interpolate' applies to the textures of a mesh file; an image { ... } takes its own");
 		break;
 	}
 	default:
@@ -81,15 +85,6 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 	}
 	if (kw_is_object(stmt->u.stmt.kw) && seen[KW_INVERSE])
 		check_inverse(c, stmt, seen[KW_INVERSE]);
-}
-
-static void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what)
-{
-	char *path = file_resolve(src->dir, str->u.str.text);
-	const char *why = file_unreadable(path);
-	if (why)
-		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, why);
-	free(path);
 }
 
 /* A CSG: its items, then its members, each a statement of its own (a for loop's body is
@@ -120,23 +115,6 @@ static void check_csg(struct checker *c, struct ast *s)
 		check_solid_members(c, s);
 	if (seen[KW_INVERSE])
 		check_inverse(c, s, seen[KW_INVERSE]);
-}
-
-/* mesh { NAME ... }: the grammar reads a leading name as an attribute; when it names a
- * value, it is the mesh's file name. */
-static void mesh_file_name(struct checker *c, struct ast_block *block)
-{
-	if (block->args.n || !block->items.n)
-		return;
-	struct ast *first = block->items.v[0];
-	struct binding *b = first->u.item.kw < 0 && !first->u.item.args.n && !first->u.item.block
-	                    ? names_lookup(c, first->u.item.name) : NULL;
-	if (!b || names_class(b->kind) != NAMES_VALUES)
-		return;
-	ast_list_push(c->nodes, &block->args, ast_ident(c->nodes, first->u.item.name_span, first->u.item.name));
-	block->items.v++;
-	block->items.n--;
-	block->items.cap--;
 }
 
 static void check_block_stmt(struct checker *c, struct ast *s)
@@ -176,7 +154,7 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 	if (kw == KW_LIGHT && c->macro && !c->macro->u.def.not_member)
 		c->macro->u.def.not_member = s;
 	if (kw == KW_MESH)
-		mesh_file_name(c, s->u.stmt.block);
+		block_file_name(c, s->u.stmt.block);
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
 	c->defining = kw == KW_MATERIAL ? s->u.stmt.name : NULL;
 	bool complete = check_block(c, spec_of(kw), s->u.stmt.block, s->u.stmt.kw_span, seen);

@@ -1,10 +1,13 @@
 /* check_block.c: which attributes each block statement takes (camera, light, material,
- * the objects and CSGs, skybox, samples), the shape of each attribute's value, and the
- * check of a block against them. */
+ * the objects and CSGs, skybox, samples) and each block inside a material (pattern, image,
+ * normal), the shape of each attribute's value, and the check of a block against them. */
 #include "check_internal.h"
 
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "file.h"
 #include "scene_desc.h"
 
 struct attr_spec {
@@ -26,6 +29,16 @@ static const struct attr_spec material_attrs[] = {
 	{ KW_LIKE, S_LIKE, false }, { KW_DIFFUSE, S_PIGMENT, false }, { KW_SPECULAR, S_VEC, false },
 	{ KW_SHININESS, S_NUM, false }, { KW_REFLECT, S_VEC, false }, { KW_TRANSMIT, S_VEC, false },
 	{ KW_IOR, S_NUM, false }, { KW_FRESNEL, S_FLAG, false }, { KW_EMIT, S_VEC, false },
+	{ KW_NORMAL, S_NORMAL, false },
+};
+/* LANGUAGE.md section 11: what modifies a pattern's value, in a diffuse pattern and a normal */
+#define PATTERN_MODIFIERS { KW_FREQUENCY, S_NUM, false }, { KW_PHASE, S_NUM, false }, \
+	{ KW_TURBULENCE, S_VEC, false }, { KW_OCTAVES, S_NUM, false }, { KW_OMEGA, S_NUM, false }, \
+	{ KW_LAMBDA, S_NUM, false }
+static const struct attr_spec pattern_attrs[] = { { KW_COLORS, S_COLORS, false }, PATTERN_MODIFIERS, TRANSFORMS };
+static const struct attr_spec normal_attrs[] = { PATTERN_MODIFIERS, TRANSFORMS };
+static const struct attr_spec image_attrs[] = {
+	{ KW_MAP, S_WORD, false }, { KW_INTERPOLATE, S_WORD, false }, { KW_ONCE, S_FLAG, false }, TRANSFORMS,
 };
 /* every object takes 'inverse'; check.c says when it has no inside to swap */
 static const struct attr_spec shape_attrs[] = {
@@ -37,14 +50,14 @@ static const struct attr_spec open_shape_attrs[] = {   /* cylinder, cone */
 static const struct attr_spec mesh_attrs[] = {
 	{ KW_MATERIAL, S_MATERIAL, false }, TRANSFORMS, { KW_INVERSE, S_FLAG, false }, { KW_SMOOTH, S_FLAG, false },
 	{ KW_VERTICES, S_LIST, false }, { KW_FACES, S_LIST, false }, { KW_NORMALS, S_LIST, false },
-	{ KW_INSIDE_VECTOR, S_VEC, false },
+	{ KW_INSIDE_VECTOR, S_VEC, false }, { KW_UVS, S_LIST, false }, { KW_INTERPOLATE, S_WORD, false },
 };
 static const struct attr_spec skybox_attrs[] = {
 	{ KW_COLOR, S_VEC, false }, { KW_ZENITH, S_VEC, false }, { KW_HORIZON, S_VEC, false },
 	{ KW_IMAGE, S_STR, false }, { KW_ROTATE, S_NUM, false }, { KW_INTENSITY, S_NUM, false },
 };
 static const struct attr_spec samples_attrs[] = {
-	{ KW_COUNT, S_NUM, false }, { KW_PATTERN, S_PATTERN, false }, { KW_SEED, S_NUM, false },
+	{ KW_COUNT, S_NUM, false }, { KW_PATTERN, S_WORD, false }, { KW_SEED, S_NUM, false },
 	{ KW_TARGET_ERROR, S_NUM, false },
 };
 
@@ -56,9 +69,14 @@ struct block_spec {
 	const char *signature;     /* how the positional arguments are written, for messages */
 	const char *names[4];      /* what each positional argument is, for messages */
 	unsigned optional;         /* how many of the last positional arguments may be left out */
+	unsigned char patterns;    /* a texture block's pattern names (enum texture), which stand
+	                            * as items of their own */
 };
 
-#define SPEC(what, attrs, pos, sig, ...) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig, { __VA_ARGS__ }, 0 }
+/* The pattern names a block takes as items. */
+enum texture { TEX_NONE, TEX_PIGMENT, TEX_NORMAL };
+
+#define SPEC(what, attrs, pos, sig, ...) { what, attrs, sizeof attrs / sizeof attrs[0], pos, sig, { __VA_ARGS__ }, 0, TEX_NONE }
 static const struct block_spec camera_spec = SPEC("camera", camera_attrs, "", NULL, NULL);
 static const struct block_spec light_spec = SPEC("light", light_attrs, "", NULL, NULL);
 static const struct block_spec material_spec = SPEC("material", material_attrs, "", NULL, NULL);
@@ -79,7 +97,7 @@ static const struct block_spec cone_spec = SPEC("cone", open_shape_attrs, "2121"
 static const struct block_spec disc_spec = {
 	"disc", shape_attrs, sizeof shape_attrs / sizeof shape_attrs[0], "2211",
 	"disc { CENTER, NORMAL, RADIUS [, HOLE_RADIUS] ... }",
-	{ "the disc's center", "the disc's normal", "the disc's radius", "the disc's hole radius" }, 1,
+	{ "the disc's center", "the disc's normal", "the disc's radius", "the disc's hole radius" }, 1, TEX_NONE,
 };
 static const struct block_spec torus_spec = SPEC("torus", shape_attrs, "11", "torus { MAJOR, MINOR ... }",
                                                  "the torus's major radius", "the torus's minor radius");
@@ -91,6 +109,13 @@ static const struct block_spec intersection_spec = SPEC("intersection", shape_at
 static const struct block_spec difference_spec = SPEC("difference", shape_attrs, "", NULL, NULL);
 static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL, NULL);
 static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL, NULL);
+static const struct block_spec pattern_spec = {
+	"pattern", pattern_attrs, sizeof pattern_attrs / sizeof pattern_attrs[0], "", NULL, { NULL }, 0, TEX_PIGMENT,
+};
+static const struct block_spec normal_spec = {
+	"normal", normal_attrs, sizeof normal_attrs / sizeof normal_attrs[0], "", NULL, { NULL }, 0, TEX_NORMAL,
+};
+static const struct block_spec image_spec = SPEC("image", image_attrs, "", NULL, NULL);
 
 static const struct attr_spec *find_attr(const struct block_spec *spec, int kw)
 {
@@ -161,24 +186,49 @@ static void check_material_ref(struct checker *c, struct ast *id)
 	unknown_name(c, id->span, name, NAMES_MATERIALS);
 }
 
-static void check_pattern(struct checker *c, struct ast *id)
+/* The words of interpolate, in the order of their codes (1: bilinear). */
+static const char *const interpolate_words[] = { "nearest", "bilinear" };
+
+/* The word id names, of the list S_WORD attribute kw takes: its index into
+ * id->u.ident.builtin, or an error with "did you mean". */
+static void check_word(struct checker *c, struct ast *id, int kw)
 {
-	for (int p = 0; p < PATTERN_COUNT; p++)
-		if (strcmp(id->u.ident.name, scene_desc_pattern_name(p)) == 0) {
-			id->u.ident.builtin = p;
+	const char *words[PATTERN_COUNT > 4 ? PATTERN_COUNT : 4];
+	size_t n = 0;
+	const char *what = kw == KW_MAP ? "map kind" : kw == KW_INTERPOLATE ? "interpolate mode" : "pattern";
+	if (kw == KW_MAP)
+		for (int k = IMAGE_MAP_PLANAR; k <= IMAGE_MAP_UV; k++)
+			words[n++] = scene_desc_map_name(k);
+	else if (kw == KW_INTERPOLATE)
+		for (size_t k = 0; k < sizeof interpolate_words / sizeof interpolate_words[0]; k++)
+			words[n++] = interpolate_words[k];
+	else
+		for (int p = 0; p < PATTERN_COUNT; p++)
+			words[n++] = scene_desc_pattern_name(p);
+	for (size_t k = 0; k < n; k++)
+		if (strcmp(id->u.ident.name, words[k]) == 0) {
+			id->u.ident.builtin = (int)k;
 			return;
 		}
 	struct suggestion s;
-	char buf[96];
+	char buf[160];
 	suggest_init(&s, id->u.ident.name);
-	for (int p = 0; p < PATTERN_COUNT; p++)
-		suggest_consider(&s, scene_desc_pattern_name(p));
-	if (s.best)
-		diag_error(c->diag, id->span, "unknown pattern '%s'%s", id->u.ident.name, suggest_text(&s, buf, sizeof buf));
-	else
-		diag_error(c->diag, id->span, "unknown pattern '%s'; the patterns are center, grid, random, jittered and poisson",
-		           id->u.ident.name);
+	for (size_t k = 0; k < n; k++)
+		suggest_consider(&s, words[k]);
+	if (s.best) {
+		diag_error(c->diag, id->span, "unknown %s '%s'%s", what, id->u.ident.name, suggest_text(&s, buf, sizeof buf));
+		return;
+	}
+	size_t used = 0;
+	for (size_t k = 0; k < n && used < sizeof buf; k++)
+		used += (size_t)snprintf(buf + used, sizeof buf - used, "%s%s", k == 0 ? "" : k == n - 1 ? " and " : ", ",
+		                         words[k]);
+	diag_error(c->diag, id->span, "unknown %s '%s'; the %ss are %s", what, id->u.ident.name, what, buf);
 }
+
+static const struct block_spec *texture_spec(int kw);
+static void check_texture(struct checker *c, const struct block_spec *spec, struct ast_block *block,
+                          struct span kw_span);
 
 static void check_item(struct checker *c, struct ast *item, const struct attr_spec *a)
 {
@@ -191,7 +241,7 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 			return;
 		}
 
-	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL) {
+	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL && a->shape != S_NORMAL) {
 		diag_error(c->diag, item->u.item.block->open, "'%s' takes a value, not a block", name);
 		return;
 	}
@@ -216,6 +266,11 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 		}
 		if (args->v[0]->kind == AST_STR) {
 			diag_error(c->diag, args->v[0]->span, "'%s' takes a value, not a string", name);
+			return;
+		}
+		if (args->v[0]->kind == AST_ITEM) { /* diffuse pattern { ... }, image { ... } */
+			struct ast *sub = args->v[0];
+			check_texture(c, texture_spec(sub->u.item.kw), sub->u.item.block, sub->u.item.name_span);
 			return;
 		}
 		check_value(c, args->v[0], a->shape, name);
@@ -247,10 +302,32 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 		if ((item = name_arg(c, item, "a material")))
 			check_material_ref(c, item);
 		return;
-	case S_PATTERN:
-		if ((item = name_arg(c, item, "a pattern")))
-			check_pattern(c, item);
+	case S_WORD: {
+		int kw = item->u.item.kw;
+		if ((item = name_arg(c, item, kw == KW_MAP ? "a map kind" : kw == KW_INTERPOLATE ? "an interpolate mode"
+		                                                                   : "a pattern")))
+			check_word(c, item, kw);
 		return;
+	}
+	case S_NORMAL:
+		if (!item->u.item.block) {
+			diag_error(c->diag, args->n ? args->v[0]->span : at, "'normal' takes a block: normal { bumps 0.5 }");
+			return;
+		}
+		check_texture(c, &normal_spec, item->u.item.block, at);
+		return;
+	case S_COLORS: {
+		if (args->n != 1) {
+			diag_error(c->diag, args->n ? args->v[1]->span : at,
+			           "'colors' takes one array of [position, colour] pairs: colors [[0, <0, 0, 0>], [1, <1, 1, 1>]]");
+			return;
+		}
+		enum ast_type t = check_expr(c, args->v[0]);
+		if (t != TYPE_NONE && t != TYPE_ANY && t != TYPE_ARRAY)
+			diag_error(c->diag, args->v[0]->span, "'colors' takes an array of [position, colour] pairs, found %s",
+			           value_type_name(t));
+		return;
+	}
 	case S_LIST:
 		if (item->u.item.block && item->u.item.block->broken)
 			return;
@@ -285,9 +362,124 @@ static bool misplaced(struct checker *c, struct ast *item)
 	case KW_INVERSE:
 		diag_error(c->diag, at, "'inverse' applies only to an object: it swaps a solid's inside and outside");
 		return true;
+	case KW_COLORS:
+		diag_error(c->diag, at, "'colors' applies only to a diffuse pattern { ... }");
+		return true;
+	case KW_FREQUENCY: case KW_PHASE: case KW_TURBULENCE: case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA:
+		diag_error(c->diag, at, "'%s' applies only to a diffuse pattern { ... } or a normal { ... }", item_name(item));
+		return true;
+	case KW_MAP: case KW_ONCE:
+		diag_error(c->diag, at, "'%s' applies only to a diffuse image { ... }", item_name(item));
+		return true;
+	case KW_INTERPOLATE:
+		diag_error(c->diag, at, "'interpolate' applies only to a diffuse image { ... } or a mesh file");
+		return true;
+	case KW_UVS:
+		diag_error(c->diag, at, "'uvs' applies only to a mesh given by vertices { ... } and faces { ... }");
+		return true;
+	case KW_NORMAL:
+		diag_error(c->diag, at, "'normal' goes in a material: material { normal { ... } }");
+		return true;
 	default:
 		return false;
 	}
+}
+
+/* The pattern names of a texture block of that kind: [*first, *end) of enum pattern_name,
+ * and how a message lists them. */
+static void pattern_range(unsigned char kind, int *first, int *end, const char **list)
+{
+	*first = kind == TEX_NORMAL ? PAT_FIRST_NORMAL : 0;
+	*end = kind == TEX_NORMAL ? PAT_COUNT : PAT_FIRST_NORMAL;
+	*list = kind == TEX_NORMAL ? "bumps, dents, ripples, waves or wrinkles"
+	      : "gradient V, radial, onion, wood, marble, leopard, agate, bozo, granite or spotted";
+}
+
+/* Whether some item of block names a pattern of the block's kind. */
+static bool names_pattern(const struct block_spec *spec, const struct ast_block *block)
+{
+	int first, end;
+	const char *list;
+	pattern_range(spec->patterns, &first, &end, &list);
+	for (size_t i = 0; i < block->items.n; i++) {
+		const struct ast *item = block->items.v[i];
+		int p = item->u.item.kw < 0 ? scene_desc_texture_lookup(item->u.item.name) : -1;
+		if (p >= first && p < end)
+			return true;
+	}
+	return false;
+}
+
+/* An item of a pattern or normal block that is no attribute: the pattern's name (with
+ * its value: gradient's vector, a normal's amount), recorded as seen[KW_PATTERN], which
+ * those blocks have no other use for. Returns false when it is unknown (it may be the
+ * pattern's name or an attribute, misspelt). */
+static bool pattern_item(struct checker *c, const struct block_spec *spec, const struct ast_block *block,
+                         struct ast *item, struct ast *seen[KW_COUNT_ALL])
+{
+	const char *name = item->u.item.name;
+	struct span at = item->u.item.name_span;
+	struct ast_list *args = &item->u.item.args;
+	int first, end;
+	const char *list;
+	pattern_range(spec->patterns, &first, &end, &list);
+	int p = scene_desc_texture_lookup(name);
+	if (p >= 0 && (p < first || p >= end)) {
+		if (spec->patterns == TEX_NORMAL)
+			diag_error(c->diag, at, "'%s' is a colour pattern: it goes in diffuse pattern { ... }; a normal takes %s",
+			           name, list);
+		else
+			diag_error(c->diag, at, "'%s' is a normal pattern: it goes in the material's normal { ... }, not in "
+			           "diffuse pattern { ... }", name);
+		return false; /* it stands for the block's pattern: that none is given is said */
+	}
+	if (p >= 0) {
+		if (seen[KW_PATTERN]) {
+			diag_error(c->diag, at, "a %s takes one pattern, and '%s' is given already", spec->what,
+			           seen[KW_PATTERN]->u.item.name);
+			diag_note(c->diag, seen[KW_PATTERN]->u.item.name_span, "first given here");
+			return true;
+		}
+		seen[KW_PATTERN] = item;
+		/* wood marble: the grammar takes the second name for the first's value */
+		if (args->n == 1 && args->v[0]->kind == AST_IDENT && scene_desc_texture_lookup(args->v[0]->u.ident.name) >= 0) {
+			diag_error(c->diag, args->v[0]->span, "a %s takes one pattern, and '%s' is given already", spec->what,
+			           name);
+			return true;
+		}
+		if (item->u.item.block) {
+			diag_error(c->diag, item->u.item.block->open, "'%s' takes %s, not a block", name,
+			           p == PAT_GRADIENT ? "a vector" : p >= PAT_FIRST_NORMAL ? "an amount" : "no value");
+			return true;
+		}
+		static const struct attr_spec vector = { 0, S_VEC, false }, amount = { 0, S_NUM, false },
+		                              flag = { 0, S_FLAG, false };
+		if (p == PAT_GRADIENT && args->n == 0)
+			diag_error(c->diag, at, "'gradient' needs the direction it runs in: gradient <0, 1, 0>");
+		else if (p == PAT_GRADIENT)
+			check_item(c, item, &vector);
+		else if (p >= PAT_FIRST_NORMAL && args->n > 0) /* the amount may be left out: 0.5 */
+			check_item(c, item, &amount);
+		else if (p < PAT_FIRST_NORMAL)
+			check_item(c, item, &flag);
+		return true;
+	}
+	/* misspelt: the pattern's name, or an attribute; the closer guess says which */
+	struct suggestion s;
+	char buf[160];
+	suggest_init(&s, name);
+	for (int k = first; k < end; k++)
+		suggest_consider(&s, scene_desc_texture_name(k));
+	const char *pattern = s.best;
+	for (size_t k = 0; k < spec->nattrs; k++)
+		suggest_consider(&s, kw_name(spec->attrs[k].kw));
+	if (s.best && s.best == pattern)
+		diag_error(c->diag, at, "unknown pattern '%s'%s", name, suggest_text(&s, buf, sizeof buf));
+	else if (s.best || names_pattern(spec, block))
+		diag_error(c->diag, at, "unknown attribute '%s' in %s%s", name, spec->what, suggest_text(&s, buf, sizeof buf));
+	else
+		diag_error(c->diag, at, "unknown pattern '%s'; a %s takes %s", name, spec->what, list);
+	return false;
 }
 
 /* Checks a block's positional arguments and items; records the first item of each
@@ -320,6 +512,10 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
 	for (size_t i = 0; i < block->items.n; i++) {
 		struct ast *item = block->items.v[i];
 		const struct attr_spec *a = item->u.item.kw >= 0 ? find_attr(spec, item->u.item.kw) : NULL;
+		if (!a && item->u.item.kw < 0 && spec->patterns) {
+			complete &= pattern_item(c, spec, block, item, seen);
+			continue;
+		}
 		if (!a && misplaced(c, item)) {
 			complete = false;
 			continue;
@@ -373,5 +569,72 @@ const struct block_spec *spec_of(enum kw kw)
 	case KW_SKYBOX: return &skybox_spec;
 	case KW_SAMPLES: return &samples_spec;
 	default: return NULL;
+	}
+}
+
+void block_file_name(struct checker *c, struct ast_block *block)
+{
+	if (block->args.n || !block->items.n)
+		return;
+	struct ast *first = block->items.v[0];
+	struct binding *b = first->u.item.kw < 0 && !first->u.item.args.n && !first->u.item.block
+	                    ? names_lookup(c, first->u.item.name) : NULL;
+	if (!b || names_class(b->kind) != NAMES_VALUES)
+		return;
+	ast_list_push(c->nodes, &block->args, ast_ident(c->nodes, first->u.item.name_span, first->u.item.name));
+	block->items.v++;
+	block->items.n--;
+	block->items.cap--;
+}
+
+void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what)
+{
+	char *path = file_resolve(src->dir, str->u.str.text);
+	const char *why = file_unreadable(path);
+	if (why)
+		diag_error(c->diag, str->span, "cannot read %s '%s': %s", what, str->u.str.text, why);
+	free(path);
+}
+
+/* The block a diffuse item's pattern or image (kw) holds. */
+static const struct block_spec *texture_spec(int kw)
+{
+	return kw == KW_IMAGE ? &image_spec : &pattern_spec;
+}
+
+/* diffuse pattern { ... }, diffuse image { "FILE" ... } or normal { ... }, whose keyword is
+ * at kw_span: its attributes, its one pattern name (not an image), its file (an image
+ * only). A block broken by a syntax error fails the statement: evaluated, it would lack
+ * its pattern. */
+static void check_texture(struct checker *c, const struct block_spec *spec, struct ast_block *block,
+                          struct span kw_span)
+{
+	if (block->broken) {
+		c->tainted = true;
+		return;
+	}
+	if (spec == &image_spec) {
+		block_file_name(c, block);
+		struct ast *file = block->args.n ? block->args.v[0] : NULL;
+		if (!file) {
+			diag_error(c->diag, kw_span, "an image needs a file name: image { \"FILE\" ... }");
+		} else if (file->kind == AST_ERROR) {
+			c->tainted = true;
+		} else {
+			check_value(c, file, S_STR, "an image's file name");
+			if (file->kind == AST_STR)
+				check_readable(c, diag_source_at(c->diag, file->span.start), file, "image file");
+		}
+	} else if (block->args.n) {
+		diag_error(c->diag, block->args.v[0]->span, "a %s takes no file name: it starts with the pattern's name",
+		           spec->what);
+	}
+	struct ast *seen[KW_COUNT_ALL] = { 0 };
+	bool complete = check_block(c, spec, block, kw_span, seen);
+	if (spec->patterns && !seen[KW_PATTERN] && complete) {
+		int first, end;
+		const char *list;
+		pattern_range(spec->patterns, &first, &end, &list);
+		diag_error(c->diag, kw_span, "a %s needs the name of its pattern: %s", spec->what, list);
 	}
 }

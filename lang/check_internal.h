@@ -62,9 +62,12 @@ enum shape {
 	S_STR,        /* one string */
 	S_MATERIAL,   /* a material's name, or an inline material { } */
 	S_LIKE,       /* a material's name */
-	S_PATTERN,    /* a sampling pattern's name */
-	S_PIGMENT,    /* a colour or checker(...) */
+	S_WORD,       /* a word of the attribute's own list: samples' pattern, an image's map,
+	               * interpolate */
+	S_PIGMENT,    /* a colour, checker(...), pattern { ... } or image { ... } */
 	S_LIST,       /* { V, V, ... } */
+	S_NORMAL,     /* normal { ... } */
+	S_COLORS,     /* an array of [position, colour] pairs */
 };
 
 /* ---- check_solid.c ---- */
@@ -125,5 +128,10 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
 void check_value(struct checker *c, struct ast *e, enum shape shape, const char *attr);
 /* An item's keyword as written. */
 const char *item_name(const struct ast *item);
+/* mesh { NAME ... }, image { NAME ... }: the grammar reads a leading name as an attribute;
+ * when it names a value, it is moved to the block's arguments as the file name. */
+void block_file_name(struct checker *c, struct ast_block *block);
+/* Reports a literal file name str (what the file is for) that cannot be read from src's folder. */
+void check_readable(struct checker *c, const struct source *src, struct ast *str, const char *what);
 
 #endif

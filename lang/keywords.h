@@ -1,4 +1,4 @@
-/* keywords.h: the reserved words of the scene language (LANGUAGE.md sections 2, 5, 9 and 10). */
+/* keywords.h: the reserved words of the scene language (LANGUAGE.md sections 2, 5, 9, 10 and 11). */
 #ifndef SCN_KEYWORDS_H
 #define SCN_KEYWORDS_H
 
@@ -20,6 +20,8 @@ enum kw {
 	KW_REFLECT, KW_TRANSMIT, KW_IOR, KW_FRESNEL, KW_EMIT, KW_TRANSLATE, KW_ROTATE, KW_SCALE,
 	KW_SMOOTH, KW_VERTICES, KW_FACES, KW_NORMALS, KW_ZENITH, KW_HORIZON, KW_IMAGE, KW_COUNT,
 	KW_PATTERN, KW_SEED, KW_TARGET_ERROR, KW_OPEN, KW_INVERSE, KW_INSIDE_VECTOR,
+	KW_FREQUENCY, KW_PHASE, KW_TURBULENCE, KW_OCTAVES, KW_OMEGA, KW_LAMBDA, KW_COLORS, KW_MAP,
+	KW_INTERPOLATE, KW_ONCE, KW_NORMAL, KW_UVS,
 	KW_COUNT_ALL
 };
 
@@ -32,7 +34,7 @@ static inline bool kw_is_object(int k)
 /* The attributes that take no value. */
 static inline bool kw_is_flag(int k)
 {
-	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE;
+	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE || k == KW_ONCE;
 }
 
 static inline bool kw_is_csg(int k)

@@ -1,4 +1,4 @@
-/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5, 9 and 10) -> AST.
+/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5, 9, 10 and 11) -> AST.
  * Every statement starts with a keyword. Blocks are generic (positional arguments, then
  * attribute items) so that check.c, not the grammar, knows which attribute belongs where
  * and can say "unknown attribute 'radus' in sphere; did you mean 'radius'?". A CSG block
@@ -31,6 +31,7 @@ static struct ast *not_a_vector(struct lang_ctx *ctx, struct span sp);
 static struct ast *compare(struct lang_ctx *ctx, struct span sp, char op, struct ast *l, struct span lsp,
                            struct ast *r, struct span rsp);
 static char *reserved(struct lang_ctx *ctx, struct span sp);
+static struct span span_join(struct span a, struct span b);
 static struct ast_list list1(struct lang_ctx *ctx, struct ast *e);
 static struct ast_list append(struct lang_ctx *ctx, struct ast_list l, struct ast *e);
 static bool statement(struct lang_ctx *ctx, struct ast_list *list, struct ast *stmt, bool file_level);
@@ -81,6 +82,8 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <kw> ITEMS_KW "statement keyword"   /* camera light skybox: { ITEMS } */
 %token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle box cylinder cone disc torus: { ARGS ITEMS } */
 %token <kw> CSG_KW "CSG keyword"       /* union merge intersection difference: { MEMBERS ITEMS } */
+%token <kw> PIGMENT_KW "'pattern' or 'image'"  /* right after diffuse: diffuse pattern { ITEMS } */
+%token <kw> NORMAL "'normal'"          /* normal { ITEMS }: apart from ATTR, whose '{' opens a list */
 %token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
 %token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
 %token DOTDOT "'..'"
@@ -260,6 +263,12 @@ attr_item:
 |	ATTR list_block                     { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 |	MATERIAL opt_args                   { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
+|	NORMAL opt_args                     { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
+|	NORMAL items_block                  { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
+	/* diffuse pattern { ... } or image { "FILE" ... }: diffuse's one argument is an item
+	 * that holds the block; an image's file comes first, as a mesh's does */
+|	ATTR PIGMENT_KW mesh_block          { $$ = ast_item(A, @$, $1, NULL, @1, list1(ctx, ast_item(A, span_join(@2, @3), $2,
+	                                      NULL, @2, no_list, $3)), NULL); }
 ;
 name:
 	IDENT
@@ -274,6 +283,7 @@ binder:
 |	ARGS_KW                             { $$ = reserved(ctx, @1); }
 |	CSG_KW                              { $$ = reserved(ctx, @1); }
 |	MATERIAL                            { $$ = reserved(ctx, @1); }
+|	NORMAL                              { $$ = reserved(ctx, @1); }
 |	MESH                                { $$ = reserved(ctx, @1); }
 |	SAMPLES                             { $$ = reserved(ctx, @1); }
 |	MAX_DEPTH                           { $$ = reserved(ctx, @1); }
@@ -292,7 +302,7 @@ soup:
 ;
 soup_token:
 	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {} | CSG_KW {}
-|	MATERIAL {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
+|	MATERIAL {} | NORMAL {} | PIGMENT_KW {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
 |	DOTDOT | BAD | POV_COLOUR | '(' | ')' | '<' | '>' | ',' | '.' | '=' | '+' | '-' | '*' | '/'
 |	IF | ELSE | DEF | AND | OR | NOT | BOOL {} | EQ | NE | LT | GT | LE | GE | '?' | ':' | '[' | ']'
 ;
@@ -372,6 +382,11 @@ call_args:
 static struct ast *string_node(struct lang_ctx *ctx, struct span sp, char *text, size_t len)
 {
 	return text ? ast_str(ctx->arena, sp, text, len) : ast_new(ctx->arena, AST_ERROR, sp);
+}
+
+static struct span span_join(struct span a, struct span b)
+{
+	return (struct span){ a.start, b.end };
 }
 
 static char *reserved(struct lang_ctx *ctx, struct span sp)
@@ -469,6 +484,8 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 	case YYSYMBOL_ATTR: return "an attribute";
 	case YYSYMBOL_IDENT: case YYSYMBOL_NAME_VALUE: return value || attribute ? NULL : "a name";
 	case YYSYMBOL_MATERIAL: return attribute ? NULL : "'material'";
+	case YYSYMBOL_NORMAL: return attribute ? NULL : "'normal'";
+	case YYSYMBOL_PIGMENT_KW: return NULL; /* only ever after diffuse, where a value is due */
 	case YYSYMBOL_STRING: return value ? NULL : "a string"; /* a string where a value may stand is rare */
 	case YYSYMBOL_POV_COLOUR: case YYSYMBOL_BAD: return NULL;
 	case YYSYMBOL_LT: case YYSYMBOL_GT: case YYSYMBOL_LE: case YYSYMBOL_GE: case YYSYMBOL_EQ: case YYSYMBOL_NE:
@@ -572,7 +589,7 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 		name |= expected[i] == YYSYMBOL_IDENT;
 	}
 	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW
-	            || got == YYSYMBOL_MATERIAL
+	            || got == YYSYMBOL_MATERIAL || got == YYSYMBOL_NORMAL || got == YYSYMBOL_PIGMENT_KW
 	            || got == YYSYMBOL_MESH || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH || got == YYSYMBOL_LET
 	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN || got == YYSYMBOL_IF
 	            || got == YYSYMBOL_ELSE || got == YYSYMBOL_DEF || got == YYSYMBOL_AND || got == YYSYMBOL_OR

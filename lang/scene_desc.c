@@ -24,6 +24,22 @@ const char *scene_desc_texture_name(enum pattern_name p)
 	return texture_names[p];
 }
 
+int scene_desc_texture_lookup(const char *name)
+{
+	for (int p = 0; p < PAT_COUNT; p++)
+		if (strcmp(name, texture_names[p]) == 0)
+			return p;
+	return -1;
+}
+
+/* ORDER IMAGE_MAP */
+static const char *const map_names[IMAGE_MAP_UV + 1] = { "planar", "spherical", "cylindrical", "uv" };
+
+const char *scene_desc_map_name(enum image_map_kind k)
+{
+	return map_names[k];
+}
+
 static void set3(double v[3], double x, double y, double z)
 {
 	v[0] = x;

@@ -60,6 +60,7 @@ struct pattern_desc {
 	struct span span;
 };
 
+/* ORDER IMAGE_MAP: scene_desc.c's map_names follows it. */
 enum image_map_kind { IMAGE_MAP_PLANAR, IMAGE_MAP_SPHERICAL, IMAGE_MAP_CYLINDRICAL, IMAGE_MAP_UV };
 
 /* `image { "FILE" ... }`, a diffuse pigment. */
@@ -209,5 +210,9 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out);
 const char *scene_desc_pattern_name(enum sample_pattern p);
 /* The name of pattern p as written in a scene ("marble"). */
 const char *scene_desc_texture_name(enum pattern_name p);
+/* The pattern called name, or -1. */
+int scene_desc_texture_lookup(const char *name);
+/* The name of map kind k as written in a scene ("planar"). */
+const char *scene_desc_map_name(enum image_map_kind k);
 
 #endif
