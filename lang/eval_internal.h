@@ -1,9 +1,9 @@
 /* eval_internal.h: what the evaluator's files share, and nothing outside them uses: the
  * evaluator's state and the calls between eval.c (statements, loops, macro calls, the
- * entry points), eval_object.c (objects, CSGs, materials, transforms), eval_expr.c
- * (expressions, function calls, the values of items), eval_call.c (the bindings of a
- * call) and eval_report.c (errors and their notes), each of which calls only those
- * after it. */
+ * entry points), eval_object.c (objects, CSGs, materials), eval_texture.c (a material's
+ * patterns, images and normals), eval_xform.c (transforms), eval_expr.c (expressions,
+ * function calls, the values of items), eval_call.c (the bindings of a call) and
+ * eval_report.c (errors and their notes), each of which calls only those after it. */
 #ifndef SCN_EVAL_INTERNAL_H
 #define SCN_EVAL_INTERNAL_H
 
@@ -92,6 +92,27 @@ void eval_shape(struct evaluator *ev, struct ast *s, const struct source *src);
  * members when one of them could not be evaluated. */
 bool csg_begin(struct evaluator *ev, struct ast *s, struct csg_frame *frame);
 void csg_end(struct evaluator *ev, struct ast *s);
+
+/* ---- eval_texture.c ---- */
+
+/* diffuse pattern { ... } (normal false) or normal { ... } (normal true): a new entry of
+ * the scene's patterns, its colour map into color_maps; its index, or -1 after an error. */
+int eval_pattern(struct evaluator *ev, struct ast *sub, struct ast_block *block, bool normal);
+/* diffuse image { ... }, which the item sub holds: a new entry of the scene's images; its
+ * index, or -1 after an error. */
+int eval_image(struct evaluator *ev, struct ast *sub);
+
+/* ---- eval_xform.c ---- */
+
+/* x = t * x: applies the affine map t after x. */
+void xform_compose(struct xform *x, const double t[3][4]);
+/* Applies the transform item it (translate, rotate, scale) to x. Returns false after
+ * reporting a bad value. */
+bool xform_apply(struct evaluator *ev, struct ast *it, struct xform *x);
+/* Whether every entry of x is a number (scale 1e200 twice overflows). */
+bool xform_finite(const struct xform *x);
+/* Appends x to the scene's xforms; its index. */
+int xform_push(struct evaluator *ev, const struct xform *x);
 
 /* ---- eval_expr.c ---- */
 

@@ -1,7 +1,8 @@
 /* eval_object.c: the objects of a scene (LANGUAGE.md sections 5 and 9) into its
  * description: each shape's values, with every degenerate one an error at its place; the
  * items every object takes (material, transforms, inverse); CSGs, whose members follow
- * them in preorder and take their transforms and material; and materials. */
+ * them in preorder and take their transforms and material; and materials, whose patterns,
+ * images and normals eval_texture.c makes. */
 #include "eval_internal.h"
 
 #include <stdio.h>
@@ -37,6 +38,13 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 		}
 		case KW_DIFFUSE: {
 			struct ast *e = arg0(it);
+			m.pattern = -1; /* what like gave is replaced */
+			if (e->kind == AST_ITEM) { /* pattern { ... }, image { ... } */
+				bool image = e->u.item.kw == KW_IMAGE;
+				m.pattern = image ? eval_image(ev, e) : eval_pattern(ev, e, e->u.item.block, false);
+				m.pigment = m.pattern < 0 ? PIGMENT_COLOR : image ? PIGMENT_IMAGE : PIGMENT_PATTERN;
+				break;
+			}
 			if (e->type != TYPE_PIGMENT) {
 				m.pigment = PIGMENT_COLOR;
 				vec_of(ev, e, m.diffuse);
@@ -63,6 +71,7 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 			break;
 		case KW_FRESNEL: m.fresnel = true; break;
 		case KW_EMIT: vec_of(ev, arg0(it), m.emit); break;
+		case KW_NORMAL: m.normal = eval_pattern(ev, it, it->u.item.block, true); break;
 		}
 	}
 	m.name = name ? xstrdup(name) : NULL;
@@ -72,75 +81,6 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 	xgrow((void **)&o->materials, &o->cap_materials, o->nmaterials + 1, sizeof *o->materials);
 	o->materials[o->nmaterials] = m;
 	return (int)o->nmaterials++;
-}
-
-/* sin and cos of an angle in degrees, exact at multiples of 90 so that right-angle
- * rotations keep axis-aligned geometry exactly axis-aligned. */
-static void sincos_degrees(double deg, double *s, double *c)
-{
-	double r = fmod(deg, 360);
-	if (r < 0)
-		r += 360;
-	if (r == 0) { *s = 0; *c = 1; return; }
-	if (r == 90) { *s = 1; *c = 0; return; }
-	if (r == 180) { *s = 0; *c = -1; return; }
-	if (r == 270) { *s = -1; *c = 0; return; }
-	*s = sin(deg * (M_PI / 180));
-	*c = cos(deg * (M_PI / 180));
-}
-
-/* x = t * x: applies the affine map t after x. */
-static void compose(struct xform *x, const double t[3][4])
-{
-	struct xform r;
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 4; j++) {
-			double v = j == 3 ? t[i][3] : 0;
-			for (int k = 0; k < 3; k++)
-				v += t[i][k] * x->m[k][j];
-			r.m[i][j] = v;
-		}
-	*x = r;
-}
-
-/* Applies one transform item to x. Returns false after reporting a bad value. Every
- * object takes every transform (LANGUAGE.md section 9): a sphere under an uneven scale is
- * an ellipsoid. */
-static bool apply_transform(struct evaluator *ev, struct ast *it, struct xform *x)
-{
-	double v[3];
-	if (!vec_of(ev, arg0(it), v))
-		return false;
-	double t[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
-	switch (it->u.item.kw) {
-	case KW_TRANSLATE:
-		for (int i = 0; i < 3; i++)
-			t[i][3] = v[i];
-		compose(x, t);
-		return true;
-	case KW_SCALE:
-		if (v[0] == 0 || v[1] == 0 || v[2] == 0) {
-			eval_error(ev, arg0(it), "scale must not be zero in any direction");
-			return false;
-		}
-		for (int i = 0; i < 3; i++)
-			t[i][i] = v[i];
-		compose(x, t);
-		return true;
-	default: /* rotate: about x, then y, then z, as POV-Ray */
-		for (int axis = 0; axis < 3; axis++) {
-			double s, c;
-			sincos_degrees(v[axis], &s, &c);
-			double r[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
-			int a = (axis + 1) % 3, b = (axis + 2) % 3;
-			r[a][a] = c;
-			r[a][b] = -s;
-			r[b][a] = s;
-			r[b][b] = c;
-			compose(x, r);
-		}
-		return true;
-	}
 }
 
 /* Appends obj to the scene's objects; false (reported) past LANG_MAX_OBJECTS. */
@@ -154,6 +94,35 @@ static bool push_object(struct evaluator *ev, struct ast *at, const struct objec
 	}
 	xgrow((void **)&o->objects, &o->cap_objects, o->nobjects + 1, sizeof *o->objects);
 	o->objects[o->nobjects++] = *obj;
+	return true;
+}
+
+/* A mesh's uvs { ... } (LANGUAGE.md 11): one per vertex, u and v from x and y; false
+ * after an error. */
+static bool mesh_uvs(struct evaluator *ev, struct ast *stmt, struct mesh_desc *m)
+{
+	struct ast_list *items = &stmt->u.stmt.block->items;
+	struct ast *uvs = NULL;
+	for (size_t i = 0; i < items->n; i++)
+		if (items->v[i]->u.item.kw == KW_UVS)
+			uvs = items->v[i];
+	if (!uvs)
+		return true;
+	struct ast_list *l = &uvs->u.item.block->args;
+	if (l->n != m->nvertices) {
+		eval_error(ev, uvs, "a mesh needs one uv per vertex: %zu vert%s, %u uv%s", m->nvertices,
+		           m->nvertices == 1 ? "ex" : "ices", l->n, l->n == 1 ? "" : "s");
+		return false;
+	}
+	m->nuvs = l->n;
+	m->uvs = xcalloc(l->n, sizeof *m->uvs);
+	for (size_t i = 0; i < l->n; i++) {
+		double v[3];
+		if (!vec_of(ev, l->v[i], v))
+			return false;
+		m->uvs[i][0] = v[0];
+		m->uvs[i][1] = v[1];
+	}
 	return true;
 }
 
@@ -208,7 +177,7 @@ static bool eval_mesh_lists(struct evaluator *ev, struct ast *stmt, struct mesh_
 			}
 		}
 	}
-	return ok;
+	return ok && mesh_uvs(ev, stmt, m);
 }
 
 static bool same_point(const double a[3], const double b[3])
@@ -384,12 +353,30 @@ static bool shape_values(struct evaluator *ev, struct ast *s, struct object_desc
 	}
 }
 
-static bool finite_xform(const struct xform *x)
+/* Whether object s (obj, its values made) can take the material its item it gives,
+ * obj->material: an image mapped by uv needs the object's UV coordinates, which a sphere
+ * and a torus have (POV-Ray's uv_mapping), an inline mesh has from uvs { ... }, and a mesh
+ * file may have (the lowering checks). Reports at the item when not. */
+static bool uv_mapped(struct evaluator *ev, struct ast *s, struct ast *it, const struct object_desc *obj)
 {
-	for (int r = 0; r < 12; r++)
-		if (!isfinite(x->m[r / 4][r % 4]))
-			return false;
-	return true;
+	const struct scene_desc *o = ev->out;
+	const struct material_desc *m = obj->material >= 0 ? &o->materials[obj->material] : NULL;
+	if (!m || m->pigment != PIGMENT_IMAGE || o->images[m->pattern].map != IMAGE_MAP_UV)
+		return true;
+	switch (obj->kind) {
+	case OBJ_SPHERE: case OBJ_TORUS:
+		return true;
+	case OBJ_MESH:
+		if (o->meshes[obj->u.mesh.index].file || o->meshes[obj->u.mesh.index].uvs)
+			return true;
+		eval_error(ev, it, "this material's image is mapped by uv, and this mesh has no UV coordinates: "
+		           "give it uvs { ... }, one per vertex");
+		return false;
+	default:
+		eval_error(ev, it, "this material's image is mapped by uv, and a %s has no UV coordinates (a sphere, "
+		           "a torus and a mesh with uvs have them)", kw_name(s->u.stmt.kw));
+		return false;
+	}
 }
 
 /* The items of object s into obj: the ones every object takes (material, transforms,
@@ -412,11 +399,12 @@ static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc
 			else
 				ok &= material_of(ev, arg0(it), &obj->material);
 			own_material = true;
+			ok = ok && uv_mapped(ev, s, it, obj);
 			break;
 		case KW_TRANSLATE: case KW_ROTATE: case KW_SCALE:
-			ok &= apply_transform(ev, it, &x);
+			ok &= xform_apply(ev, it, &x);
 			moved = true;
-			if (ok && !finite_xform(&x)) { /* scale 1e200 scale 1e200 */
+			if (ok && !xform_finite(&x)) { /* scale 1e200 scale 1e200 */
 				eval_error(ev, it, "the transforms make the object too large to be numbers");
 				ok = false;
 			}
@@ -429,6 +417,9 @@ static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc
 			break;
 		case KW_INVERSE:
 			obj->inverse = true;
+			break;
+		case KW_INTERPOLATE: /* a mesh file's (check.c): nearest, bilinear */
+			o->meshes[obj->u.mesh.index].bilinear = arg0(it)->u.ident.builtin == 1;
 			break;
 		case KW_INSIDE_VECTOR: { /* a mesh's (check.c), whose entry shape_values made */
 			struct mesh_desc *m = &o->meshes[obj->u.mesh.index];
@@ -449,22 +440,20 @@ static bool object_items(struct evaluator *ev, struct ast *s, struct object_desc
 	if (f && f->xform >= 0 && !moved) {
 		obj->xform = f->xform;
 	} else if (f && f->xform >= 0) {
-		compose(&x, o->xforms[f->xform].m);
-		if (!finite_xform(&x)) {
+		xform_compose(&x, o->xforms[f->xform].m);
+		if (!xform_finite(&x)) {
 			eval_error_span(ev, s, s->u.stmt.kw_span,
 			                "the transforms of this object and of the CSGs around it make it too large to be numbers");
 			return false;
 		}
 	}
-	if (moved) {
-		xgrow((void **)&o->xforms, &o->cap_xforms, o->nxforms + 1, sizeof *o->xforms);
-		o->xforms[o->nxforms] = x;
-		obj->xform = (int)o->nxforms++;
-	}
+	if (moved)
+		obj->xform = xform_push(ev, &x);
 	obj->pattern_xform = obj->xform;
 	if (!own_material && f && f->material >= 0) {
 		obj->material = f->material;
 		obj->pattern_xform = f->pattern_xform;
+		obj->inherited = true;
 	}
 	if (obj->material >= 0)
 		o->materials[obj->material].used = true;

@@ -24,6 +24,7 @@ lang_libscnlang_a_SOURCES += \
 	%D%/check.c %D%/check.h %D%/check_internal.h %D%/check_block.c %D%/check_expr.c \
 	%D%/check_names.c %D%/check_solid.c \
 	%D%/eval.c %D%/eval.h %D%/eval_internal.h %D%/eval_call.c %D%/eval_expr.c %D%/eval_object.c %D%/eval_report.c \
+	%D%/eval_texture.c %D%/eval_xform.c \
 	%D%/file.c %D%/file.h \
 	%D%/scene_desc.c %D%/scene_desc.h \
 	%D%/value.c %D%/value.h

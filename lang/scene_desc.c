@@ -135,9 +135,15 @@ static void dump_material(const struct material_desc *m, size_t i, FILE *out)
 		fputs(", ", out);
 		num(out, m->checker_size);
 		fputc(')', out);
+	} else if (m->pigment == PIGMENT_PATTERN) {
+		fprintf(out, " diffuse pattern %d", m->pattern);
+	} else if (m->pigment == PIGMENT_IMAGE) {
+		fprintf(out, " diffuse image %d", m->pattern);
 	} else {
 		field_vec(out, "diffuse", m->diffuse);
 	}
+	if (m->normal >= 0)
+		fprintf(out, " normal %d", m->normal);
 	field_vec(out, "specular", m->specular);
 	field_num(out, "shininess", m->shininess);
 	field_vec(out, "reflect", m->reflect);
@@ -152,7 +158,7 @@ static void dump_material(const struct material_desc *m, size_t i, FILE *out)
 static void dump_mesh(const struct mesh_desc *m, FILE *out)
 {
 	if (m->file) {
-		fprintf(out, " file \"%s\"", m->file);
+		fprintf(out, " file \"%s\"%s", m->file, m->bilinear ? " interpolate bilinear" : "");
 		return;
 	}
 	fputs(" vertices {", out);
@@ -169,6 +175,16 @@ static void dump_mesh(const struct mesh_desc *m, FILE *out)
 		for (size_t i = 0; i < m->nnormals; i++) {
 			fputs(i ? ", " : " ", out);
 			vec(out, m->normals[i]);
+		}
+		fputs(" }", out);
+	}
+	if (m->uvs) {
+		fputs(" uvs {", out);
+		for (size_t i = 0; i < m->nuvs; i++) {
+			fputs(i ? ", " : " ", out);
+			num(out, m->uvs[i][0]);
+			fputc(' ', out);
+			num(out, m->uvs[i][1]);
 		}
 		fputs(" }", out);
 	}
@@ -189,6 +205,48 @@ static void dump_xform(const struct scene_desc *s, const char *name, int index, 
 			num(out, x->m[r][c]);
 		}
 	fputc(']', out);
+}
+
+/* A pattern (a diffuse one or a normal) on its line, its colour map written out. */
+static void dump_pattern(const struct scene_desc *s, const struct pattern_desc *p, size_t i, FILE *out)
+{
+	fprintf(out, "pattern %zu %s", i, scene_desc_texture_name(p->name));
+	if (p->name == PAT_GRADIENT) {
+		fputc(' ', out);
+		vec(out, p->vector);
+	}
+	if (p->name >= PAT_FIRST_NORMAL)
+		field_num(out, "amount", p->amount);
+	if (p->nmap) {
+		fputs(" colors [", out);
+		for (uint32_t k = 0; k < p->nmap; k++) {
+			const struct color_map_entry *e = &s->color_maps[p->map + k];
+			fputs(k ? ", [" : "[", out);
+			num(out, e->position);
+			fputs(", ", out);
+			vec(out, e->color);
+			fputc(']', out);
+		}
+		fputc(']', out);
+	}
+	field_num(out, "frequency", p->frequency);
+	field_num(out, "phase", p->phase);
+	field_vec(out, "turbulence", p->turbulence);
+	fprintf(out, " octaves %d", p->octaves);
+	field_num(out, "omega", p->omega);
+	field_num(out, "lambda", p->lambda);
+	if (p->xform >= 0)
+		dump_xform(s, "transform", p->xform, out);
+	fputc('\n', out);
+}
+
+static void dump_image(const struct scene_desc *s, const struct image_desc *im, size_t i, FILE *out)
+{
+	fprintf(out, "image %zu \"%s\" map %s interpolate %s%s", i, im->file, scene_desc_map_name(im->map),
+	        im->bilinear ? "bilinear" : "nearest", im->once ? " once" : "");
+	if (im->xform >= 0)
+		dump_xform(s, "transform", im->xform, out);
+	fputc('\n', out);
 }
 
 /* One object on its line, indented two spaces for each CSG around it. */
@@ -261,7 +319,7 @@ static void dump_object(const struct scene_desc *s, const struct object_desc *o,
 	if (o->solid)
 		fputs(" solid", out);
 	if (o->material >= 0)
-		fprintf(out, " material %d", o->material);
+		fprintf(out, " material %d%s", o->material, o->inherited ? " inherited" : "");
 	else
 		fputs(" material default", out);
 	if (o->xform >= 0)
@@ -335,5 +393,9 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 	}
 	for (size_t i = 0; i < s->nmaterials; i++)
 		dump_material(&s->materials[i], i, out);
+	for (size_t i = 0; i < s->npatterns; i++)
+		dump_pattern(s, &s->patterns[i], i, out);
+	for (size_t i = 0; i < s->nimages; i++)
+		dump_image(s, &s->images[i], i, out);
 	dump_objects(s, 0, s->nobjects, 0, out);
 }
