@@ -304,6 +304,11 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 		return;
 	case S_WORD: {
 		int kw = item->u.item.kw;
+		if (kw == KW_INTERPOLATE && args->n == 1 && args->v[0]->kind == AST_NUM) {
+			diag_error(c->diag, args->v[0]->span, "'interpolate' takes nearest or bilinear (POV-Ray's interpolate 2 "
+			           "is bilinear)");
+			return;
+		}
 		if ((item = name_arg(c, item, kw == KW_MAP ? "a map kind" : kw == KW_INTERPOLATE ? "an interpolate mode"
 		                                                                   : "a pattern")))
 			check_word(c, item, kw);
@@ -380,6 +385,12 @@ static bool misplaced(struct checker *c, struct ast *item)
 	case KW_NORMAL:
 		diag_error(c->diag, at, "'normal' goes in a material: material { normal { ... } }");
 		return true;
+	case KW_PATTERN: case KW_IMAGE: /* specular pattern { ... } */
+		if (!item->u.item.block)
+			return false;
+		diag_error(c->diag, at, "%s { ... } is a value of diffuse only: diffuse %s { ... }", item_name(item),
+		           item_name(item));
+		return true;
 	default:
 		return false;
 	}
@@ -446,6 +457,21 @@ static bool pattern_item(struct checker *c, const struct block_spec *spec, const
 			diag_error(c->diag, args->v[0]->span, "a %s takes one pattern, and '%s' is given already", spec->what,
 			           name);
 			return true;
+		}
+		/* wood colours [...]: a misspelt attribute, which the grammar took for wood's value */
+		struct ast *head = args->n ? args->v[0] : NULL;
+		while (head && (head->kind == AST_INDEX || head->kind == AST_MEMBER || head->kind == AST_BINARY))
+			head = head->kind == AST_MEMBER ? head->u.member.e : head->u.bin.l;
+		if (p != PAT_GRADIENT && p < PAT_FIRST_NORMAL && head && head->kind == AST_IDENT &&
+		    !names_lookup(c, head->u.ident.name)) {
+			struct suggestion sg;
+			char buf[160];
+			suggest_init(&sg, head->u.ident.name);
+			for (size_t k = 0; k < spec->nattrs; k++)
+				suggest_consider(&sg, kw_name(spec->attrs[k].kw));
+			diag_error(c->diag, head->span, "unknown attribute '%s' in %s%s", head->u.ident.name, spec->what,
+			           suggest_text(&sg, buf, sizeof buf));
+			return false;
 		}
 		if (item->u.item.block) {
 			diag_error(c->diag, item->u.item.block->open, "'%s' takes %s, not a block", name,
@@ -630,7 +656,7 @@ static void check_texture(struct checker *c, const struct block_spec *spec, stru
 		           spec->what);
 	}
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
-	bool complete = check_block(c, spec, block, kw_span, seen);
+	bool complete = check_block(c, spec, block, kw_span, seen) && (spec == &image_spec || !block->args.n);
 	if (spec->patterns && !seen[KW_PATTERN] && complete) {
 		int first, end;
 		const char *list;

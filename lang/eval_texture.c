@@ -39,9 +39,12 @@ static bool colour_map(struct evaluator *ev, struct ast *e, struct pattern_desc 
 		const struct value *pair = &v.elems[i];
 		struct ast *position, *colour, *at = entry_at(e, i, &position, &colour);
 		bool ok = false;
-		if (pair->type != TYPE_ARRAY || pair->len != 2)
+		if (pair->type == TYPE_ARRAY && pair->len != 2)
+			eval_error(ev, at, "an entry of 'colors' is a [position, colour] pair, as [0.5, <1, 0, 0>], not an "
+			           "array of %u", pair->len);
+		else if (pair->type != TYPE_ARRAY)
 			eval_error(ev, at, "an entry of 'colors' is a [position, colour] pair, as [0.5, <1, 0, 0>], not %s",
-			           pair->type == TYPE_ARRAY ? "an array of that length" : value_type_name(pair->type));
+			           value_type_name(pair->type));
 		else if (pair->elems[0].type != TYPE_NUM)
 			eval_error(ev, position, "a colour map's position must be a number, found %s",
 			           value_type_name(pair->elems[0].type));
@@ -52,7 +55,7 @@ static bool colour_map(struct evaluator *ev, struct ast *e, struct pattern_desc 
 			eval_error(ev, position, "a colour map's position must be between 0 and 1, not %s",
 			           value_number_text(pair->elems[0].v[0], nb));
 		else if (i > 0 && pair->elems[0].v[0] < o->color_maps[o->ncolor_maps - 1].position)
-			eval_error(ev, position, "a colour map's positions must rise: %s comes after %s",
+			eval_error(ev, position, "a colour map's positions must not fall: %s comes after %s",
 			           value_number_text(pair->elems[0].v[0], nb),
 			           value_number_text(o->color_maps[o->ncolor_maps - 1].position, nb2));
 		else
