@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "image_file.h"
 #include "mesh_import.h"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -343,6 +344,25 @@ static size_t read_fixture(const char *name, unsigned char *buf, size_t n)
 	return got;
 }
 
+/* An embedded texture's bytes decode as the file they came from does, and when cut
+ * short are refused with a message naming what the caller calls them. */
+static void check_png_memory(const unsigned char *data, size_t size)
+{
+	struct image *mem, *file;
+	char err[512];
+	CHECK(image_read_png_memory(data, size, "box.glb's texture *0", &mem, err, sizeof err) == 0);
+	CHECK(image_read(fixture("textures/checker.png"), &file, err, sizeof err) == 0);
+	if (mem && file) {
+		CHECK(mem->width == 2 && mem->height == 2 && file->width == 2 && file->height == 2);
+		CHECK(memcmp(mem->rgb, file->rgb, 2 * 2 * 3 * sizeof *mem->rgb) == 0);
+		CHECK(mem->rgb[0] == 1 && mem->rgb[3] == 0); /* white, then black */
+	}
+	image_free(mem);
+	image_free(file);
+	CHECK(image_read_png_memory(data, size - 20, "box.glb's texture *0", &mem, err, sizeof err) == EINVAL);
+	CHECK(mem == NULL && strstr(err, "cannot read 'box.glb's texture *0': truncated PNG file") != NULL);
+}
+
 /* glTF: a base colour texture as a file, then embedded; TEXCOORD_0, whose v runs down
  * in the file and up here; alpha modes; a primitive without a material. */
 static void test_gltf_materials(void)
@@ -394,6 +414,8 @@ static void test_gltf_materials(void)
 		CHECK(e->texture_path == NULL);
 		CHECK(strcmp(e->texture_format, "png") == 0);
 		CHECK(e->texture_data && e->texture_size == npng && memcmp(e->texture_data, png, npng) == 0);
+		if (e->texture_data)
+			check_png_memory(e->texture_data, e->texture_size);
 	}
 	mesh_import_free(&m);
 }
