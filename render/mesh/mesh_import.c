@@ -31,13 +31,14 @@
  * The rest, after we recompute mPrimitiveTypes from the faces: RemoveComponent drops what
  * we never use (removed_components), so that PreTransformVertices, which merges meshes of
  * one material and one vertex format, neither copies it nor keeps meshes apart for it.
- * SortByPType with AI_CONFIG_PP_SBP_REMOVE drops points and lines. None of these fails on a valid scene that has a polygon. No
- * GenNormals: the renderer computes area-weighted normals itself when the scene asks for
- * smooth. No FindDegenerates: it drops degenerate triangles silently, and the caller
- * warns about them. No JoinIdenticalVertices: mesh_join() joins the corners by position,
- * normal and UV once they are copied (a material boundary does not split a smooth
- * surface, while corners with different normals stay apart and keep the file's hard
- * edges, and a UV seam keeps both sides' coordinates), in a twentieth of the time. */
+ * SortByPType with AI_CONFIG_PP_SBP_REMOVE drops points and lines. None of these fails
+ * on a valid scene that has a polygon. No GenNormals: the renderer computes
+ * area-weighted normals itself when the scene asks for smooth. No FindDegenerates: it
+ * drops degenerate triangles silently, and the caller warns about them. No
+ * JoinIdenticalVertices: mesh_join() joins the corners by position, normal and UV once
+ * they are copied (a material boundary does not split a smooth surface, while corners
+ * with different normals stay apart and keep the file's hard edges, and a UV seam keeps
+ * both sides' coordinates), in a twentieth of the time. */
 static const unsigned read_flags = aiProcess_ValidateDataStructure;
 static const unsigned post_flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
 	aiProcess_PreTransformVertices | aiProcess_SortByPType;
@@ -230,14 +231,13 @@ static void copy_scene(const struct aiScene *sc, bool keep_normals, const char *
 		keep_uvs = keep_uvs || m->mTextureCoords[0];
 		used[m->mMaterialIndex] = true;
 	}
-	uint32_t *index_of = xmalloc((sc->mNumMaterials + 1) * sizeof *index_of);
-	if (nf > 0)
-		out->nmaterials = mesh_material_read(sc, path, used, index_of, &out->materials);
-	free(used);
 	if (nf == 0) {
-		free(index_of);
+		free(used);
 		return;
 	}
+	uint32_t *index_of = xmalloc(sc->mNumMaterials * sizeof *index_of + 1);
+	out->nmaterials = mesh_material_read(sc, path, used, index_of, &out->materials);
+	free(used);
 	out->vertices = xmalloc(nv * sizeof *out->vertices);
 	out->normals = keep_normals ? xmalloc(nv * sizeof *out->normals) : NULL;
 	out->uvs = keep_uvs ? xmalloc(nv * sizeof *out->uvs) : NULL;
