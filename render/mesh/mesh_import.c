@@ -119,24 +119,23 @@ static int set_primitive_types(const struct aiScene *sc, const char *path, char 
  * memory the first stage leaves: 46 MB for a 1M-vertex, 2M-triangle binary PLY, 58 MB
  * for an OBJ of 480 000 quads with normals (1.9M vertices as assimp reads it). Our own
  * arrays take at most 68 bytes a vertex (position, normal, mesh_join's tables), 16 more
- * with a UV, 4 a corner and 4 a face (its material); the constants below add assimp's
- * copies (12 bytes a UV) and round up. The embedded PNG images are copied once. If not,
- * fills err and returns false. */
+ * with a UV, 4 a corner and 4 a face (its material, within PER_CORNER's margin: those
+ * files take less than a third of the estimate); the constants below add assimp's copies
+ * (12 bytes a UV) and round up. The embedded PNG images are copied once. If not, fills
+ * err and returns false. */
 static bool second_stage_fits(const struct aiScene *sc, const char *path, char *err, size_t errlen)
 {
-	enum { PER_VERTEX = 80, PER_UV = 32, PER_CORNER = 16, PER_FACE = 4 };
-	uint64_t vertices = 0, uvs = 0, corners = 0, faces = 0;
+	enum { PER_VERTEX = 80, PER_UV = 32, PER_CORNER = 16 };
+	uint64_t vertices = 0, uvs = 0, corners = 0;
 	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
 		const struct aiMesh *m = sc->mMeshes[i];
 		vertices += m->mNumVertices;
 		uvs += m->mTextureCoords[0] ? m->mNumVertices : 0;
-		faces += m->mNumFaces;
 		for (unsigned j = 0; j < m->mNumFaces; j++)
 			corners += m->mFaces[j].mNumIndices;
 	}
 	char msg[160];
-	uint64_t need = PER_VERTEX * vertices + PER_UV * uvs + PER_CORNER * corners + PER_FACE * faces +
-	                mesh_material_embedded_bytes(sc);
+	uint64_t need = PER_VERTEX * vertices + PER_UV * uvs + PER_CORNER * corners + mesh_material_embedded_bytes(sc);
 	if (memory_fits(need, msg, sizeof msg))
 		return true;
 	mesh_header_fail(err, errlen, "reading mesh file '%s' (%llu vertices, %llu face corners) %s", path,
