@@ -7,6 +7,7 @@
 #include "diag.h"
 #include "load.h"
 #include "lower.h"
+#include "mesh_dump.h"
 #include "scene_desc.h"
 
 enum { OPT_DUMP, NOPTIONS };
@@ -37,8 +38,10 @@ int cmd_check(const struct command *self, int argc, char **argv)
 	if (status == LOAD_OK)
 		status = lower_scene(&d, &desc, &sc, &times, -1);
 	diag_flush(&d);
-	if (status == LOAD_OK && dump)
+	if (status == LOAD_OK && dump) {
 		scene_desc_dump(&desc, stdout);
+		status = mesh_dump_materials(&desc, stdout);
+	}
 	scene_free(&sc);
 	scene_desc_free(&desc);
 	diag_fini(&d);

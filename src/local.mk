@@ -5,3 +5,4 @@ scn_LDADD = $(SCN_LIBS)
 scn_SOURCES += src/cmd_diff.c
 scn_SOURCES += %D%/cmd_pov.c
 scn_SOURCES += %D%/cmd_converge.c %D%/plot.c %D%/plot.h %D%/povray.c %D%/povray.h
+scn_SOURCES += %D%/mesh_dump.c %D%/mesh_dump.h

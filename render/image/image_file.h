@@ -61,4 +61,9 @@ struct image_read_options {
 int image_read_with(const char *path, const struct image_read_options *opt, struct image **out,
                     char *err, size_t errlen);
 
+/* image_read for a PNG file held in memory, size bytes at data (a mesh file's embedded
+ * texture, mesh_import.h); name stands for the path in messages. (png.c) */
+int image_read_png_memory(const unsigned char *data, size_t size, const char *name, struct image **out,
+                          char *err, size_t errlen);
+
 #endif

@@ -1,6 +1,7 @@
 /* png.c: PNG through libpng: sRGB-encoded 8- or 16-bit RGB out; any PNG in, decoded
  * to linear light by its sRGB or gAMA chunk as POV-Ray does. */
 #include "codec.h"
+#include "image_file.h"
 
 #include <errno.h>
 #include <png.h>
@@ -17,7 +18,8 @@
  * that calls setjmp, so that what the callbacks and the code after setjmp change in
  * it is still valid after a longjmp (C11 7.13.2.1p3). */
 struct png_io {
-	int fd;
+	int fd;                        /* -1 when reading from mem */
+	const unsigned char *mem;      /* a PNG file in memory (len bytes), or NULL */
 	int error;                     /* errno of a failed read or write, or 0 */
 	bool eof;                      /* the file ended before libpng was done */
 	char msg[200];                 /* libpng's message */
@@ -152,6 +154,15 @@ int image_png_write(const struct image *img, int fd, const char *path, int bit_d
 static void read_fn(png_structp png, png_bytep data, size_t n)
 {
 	struct png_io *io = png_get_io_ptr(png);
+	if (io->mem) {
+		if (io->len - io->pos < n) {
+			io->eof = true;
+			png_error(png, "unexpected end of file");
+		}
+		memcpy(data, io->mem + io->pos, n);
+		io->pos += n;
+		return;
+	}
 	while (n > 0) {
 		if (io->pos == io->len) {
 			ssize_t k = read(io->fd, io->buf, sizeof io->buf);
@@ -182,9 +193,8 @@ static void read_fn(png_structp png, png_bytep data, size_t n)
  * chunk means the power law of its value, otherwise the file is taken as sRGB, as
  * the PNG specification recommends for untagged files. ICC profiles are not applied;
  * the test is POV-Ray's own (png_get_valid), so both programs agree on every file. */
-int image_png_read(int fd, const char *path, struct image **out, char *err, size_t errlen)
+static int read_png(struct png_io *io, const char *path, struct image **out, char *err, size_t errlen)
 {
-	struct png_io *io = io_new(fd);
 	png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, io, on_error, on_warning);
 	png_infop info = png ? png_create_info_struct(png) : NULL;
 	if (!info) {
@@ -245,8 +255,11 @@ int image_png_read(int fd, const char *path, struct image **out, char *err, size
 	    png_get_rowbytes(png, info) != (size_t)w * 3 * bps)
 		png_error(png, "unexpected pixel layout after conversion to RGB");
 
-	/* deflate packs 1032 bytes into one at best */
-	int rc = image_alloc_for_read(w, h, io->fd, data_bytes, 1032, path, out, err, errlen);
+	/* deflate packs 1032 bytes into one at best (image_alloc_for_read checks a file) */
+	enum { MAX_RATIO = 1032 };
+	if (io->mem && data_bytes > (double)io->len * MAX_RATIO)
+		png_error(png, "its pixels cannot fit in its bytes");
+	int rc = image_alloc_for_read(w, h, io->fd, data_bytes, MAX_RATIO, path, out, err, errlen);
 	if (rc != 0) {
 		png_destroy_read_struct(&png, &info, NULL);
 		io_free(io);
@@ -275,4 +288,24 @@ int image_png_read(int fd, const char *path, struct image **out, char *err, size
 	png_destroy_read_struct(&png, &info, NULL);
 	io_free(io);
 	return 0;
+}
+
+int image_png_read(int fd, const char *path, struct image **out, char *err, size_t errlen)
+{
+	return read_png(io_new(fd), path, out, err, errlen);
+}
+
+int image_read_png_memory(const unsigned char *data, size_t size, const char *name, struct image **out,
+                          char *err, size_t errlen)
+{
+	struct png_io *io = io_new(-1);
+	io->mem = data;
+	io->len = size;
+	*out = NULL;
+	int rc = read_png(io, name, out, err, errlen);
+	if (rc != 0) {
+		image_free(*out);
+		*out = NULL;
+	}
+	return rc;
 }

@@ -1,5 +1,6 @@
 /* mesh_import.c: mesh files through assimp's C API, flattened into one triangle list in
- * double precision (assimp stores float, so a file's values keep float precision at best). */
+ * double precision (assimp stores float, so a file's values keep float precision at best),
+ * with the file's materials (mesh_material.c). */
 #include <errno.h>
 #include <math.h>
 #include <stdbool.h>
@@ -16,6 +17,7 @@
 #include "mesh_header.h"
 #include "mesh_import.h"
 #include "mesh_join.h"
+#include "mesh_material.h"
 #include "xalloc.h"
 
 /* assimp runs in two stages, because Debian's build keeps assimp's internal assertions on
@@ -27,22 +29,26 @@
  * assimp 5.2 crashes (in aiReleaseImport) instead of returning NULL.
  *
  * The rest, after we recompute mPrimitiveTypes from the faces: RemoveComponent drops what
- * we never use (removed_components), so that PreTransformVertices, which merges meshes by
- * material, merges them all into one. SortByPType with AI_CONFIG_PP_SBP_REMOVE drops
- * points and lines. None of these fails on a valid scene that has a polygon. No
- * GenNormals: the renderer computes area-weighted normals itself when the scene asks for
- * smooth. No FindDegenerates: it drops degenerate triangles silently, and the caller
- * warns about them. No JoinIdenticalVertices: mesh_join() joins the corners by position
- * and normal alone once they are copied (a UV seam or a material boundary does not split
- * a smooth surface, while corners with different normals stay apart and keep the file's
- * hard edges), in a twentieth of the time. */
+ * we never use (removed_components), so that PreTransformVertices, which merges meshes of
+ * one material and one vertex format, neither copies it nor keeps meshes apart for it.
+ * SortByPType with AI_CONFIG_PP_SBP_REMOVE drops points and lines. None of these fails
+ * on a valid scene that has a polygon. No GenNormals: the renderer computes
+ * area-weighted normals itself when the scene asks for smooth. No FindDegenerates: it
+ * drops degenerate triangles silently, and the caller warns about them. No
+ * JoinIdenticalVertices: mesh_join() joins the corners by position, normal and UV once
+ * they are copied (a material boundary does not split a smooth surface, while corners
+ * with different normals stay apart and keep the file's hard edges, and a UV seam keeps
+ * both sides' coordinates), in a twentieth of the time. */
 static const unsigned read_flags = aiProcess_ValidateDataStructure;
 static const unsigned post_flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
 	aiProcess_PreTransformVertices | aiProcess_SortByPType;
 
-static const int removed_components = aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
-	aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS | aiComponent_TEXTURES |
-	aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_MATERIALS;
+/* Every UV channel but the first goes too; assimp 5.2's flags name channels 0 to 6 only
+ * (aiComponent_TEXCOORDSn(7) would shift by 32), and no file we know has an eighth. */
+static const unsigned removed_components = aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
+	aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS | aiComponent_LIGHTS | aiComponent_CAMERAS |
+	aiComponent_TEXCOORDSn(1) | aiComponent_TEXCOORDSn(2) | aiComponent_TEXCOORDSn(3) |
+	aiComponent_TEXCOORDSn(4) | aiComponent_TEXCOORDSn(5) | aiComponent_TEXCOORDSn(6);
 
 /* The length of msg without its trailing blanks and full stop, since our messages end
  * without one; long messages are cut. */
@@ -112,21 +118,25 @@ static int set_primitive_types(const struct aiScene *sc, const char *path, char 
  * described at read_flags, so the bytes are counted before. Measured over the resident
  * memory the first stage leaves: 46 MB for a 1M-vertex, 2M-triangle binary PLY, 58 MB
  * for an OBJ of 480 000 quads with normals (1.9M vertices as assimp reads it). Our own
- * arrays take at most 68 bytes a vertex (position, normal, mesh_join's tables) and 4 a
- * corner; the constants below add assimp's copies and round up. If not, fills err and
- * returns false. */
+ * arrays take at most 68 bytes a vertex (position, normal, mesh_join's tables), 16 more
+ * with a UV, 4 a corner and 4 a face (its material, within PER_CORNER's margin: those
+ * files take less than a third of the estimate); the constants below add assimp's copies
+ * (12 bytes a UV) and round up. The embedded PNG images are copied once. If not, fills
+ * err and returns false. */
 static bool second_stage_fits(const struct aiScene *sc, const char *path, char *err, size_t errlen)
 {
-	enum { PER_VERTEX = 80, PER_CORNER = 16 };
-	uint64_t vertices = 0, corners = 0;
+	enum { PER_VERTEX = 80, PER_UV = 32, PER_CORNER = 16 };
+	uint64_t vertices = 0, uvs = 0, corners = 0;
 	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
 		const struct aiMesh *m = sc->mMeshes[i];
 		vertices += m->mNumVertices;
+		uvs += m->mTextureCoords[0] ? m->mNumVertices : 0;
 		for (unsigned j = 0; j < m->mNumFaces; j++)
 			corners += m->mFaces[j].mNumIndices;
 	}
 	char msg[160];
-	if (memory_fits(PER_VERTEX * vertices + PER_CORNER * corners, msg, sizeof msg))
+	uint64_t need = PER_VERTEX * vertices + PER_UV * uvs + PER_CORNER * corners + mesh_material_embedded_bytes(sc);
+	if (memory_fits(need, msg, sizeof msg))
 		return true;
 	mesh_header_fail(err, errlen, "reading mesh file '%s' (%llu vertices, %llu face corners) %s", path,
 		  (unsigned long long)vertices, (unsigned long long)corners, msg);
@@ -138,7 +148,7 @@ static bool second_stage_fits(const struct aiScene *sc, const char *path, char *
 static const struct aiScene *import(const char *path, bool *too_big, char *err, size_t errlen)
 {
 	struct aiPropertyStore *props = aiCreatePropertyStore();
-	aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS, removed_components);
+	aiSetImportPropertyInteger(props, AI_CONFIG_PP_RVC_FLAGS, (int)removed_components);
 	aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
 	/* the importer keeps these properties for aiApplyPostProcessing */
 	const struct aiScene *sc = aiImportFileExWithProperties(path, read_flags, NULL, props);
@@ -200,11 +210,16 @@ static bool normals_usable(const struct aiScene *sc)
 }
 
 /* Copies the triangles of sc's triangle meshes into out, which is empty, with normals
- * when keep_normals (then every triangle mesh has usable ones). Vertices of each mesh
- * follow those of the one before, so its indices are offset by the count so far. */
-static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_data *out)
+ * when keep_normals (then every triangle mesh has usable ones), UVs when some triangle
+ * mesh has them, and the materials they use (mesh_material_read; path is the file's).
+ * Vertices of each mesh follow those of the one before, so its indices are offset by
+ * the count so far. */
+static void copy_scene(const struct aiScene *sc, bool keep_normals, const char *path, struct mesh_data *out)
 {
 	size_t nv = 0, nf = 0;
+	bool keep_uvs = false;
+	/* validation makes every mesh's mMaterialIndex one of mNumMaterials */
+	bool *used = xcalloc(sc->mNumMaterials + 1, sizeof *used);
 	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
 		const struct aiMesh *m = sc->mMeshes[i];
 		if (!is_triangle_mesh(m))
@@ -212,12 +227,21 @@ static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_
 		nv += m->mNumVertices;
 		for (unsigned j = 0; j < m->mNumFaces; j++)
 			nf += m->mFaces[j].mNumIndices == 3;
+		keep_uvs = keep_uvs || m->mTextureCoords[0];
+		used[m->mMaterialIndex] = true;
 	}
-	if (nf == 0)
+	if (nf == 0) {
+		free(used);
 		return;
+	}
+	uint32_t *index_of = xmalloc(sc->mNumMaterials * sizeof *index_of + 1);
+	out->nmaterials = mesh_material_read(sc, path, used, index_of, &out->materials);
+	free(used);
 	out->vertices = xmalloc(nv * sizeof *out->vertices);
 	out->normals = keep_normals ? xmalloc(nv * sizeof *out->normals) : NULL;
+	out->uvs = keep_uvs ? xmalloc(nv * sizeof *out->uvs) : NULL;
 	out->faces = xmalloc(nf * sizeof *out->faces);
+	out->face_material = out->nmaterials ? xmalloc(nf * sizeof *out->face_material) : NULL;
 	size_t base = 0, f = 0;
 	for (unsigned i = 0; i < sc->mNumMeshes; i++) {
 		const struct aiMesh *m = sc->mMeshes[i];
@@ -235,6 +259,13 @@ static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_
 				double *n = out->normals[base + j];
 				n[0] = q.x / len, n[1] = q.y / len, n[2] = q.z / len;
 			}
+			if (keep_uvs) {
+				/* (0, 0) for a mesh without UVs; v is 0 for a channel of u alone */
+				const struct aiVector3D *t = m->mTextureCoords[0];
+				double *uv = out->uvs[base + j];
+				uv[0] = t ? t[j].x : 0;
+				uv[1] = t && m->mNumUVComponents[0] >= 2 ? t[j].y : 0;
+			}
 		}
 		for (unsigned j = 0; j < m->mNumFaces; j++) {
 			const struct aiFace *face = &m->mFaces[j];
@@ -242,12 +273,16 @@ static void copy_scene(const struct aiScene *sc, bool keep_normals, struct mesh_
 				continue;
 			for (int k = 0; k < 3; k++)
 				out->faces[f][k] = (uint32_t)(base + face->mIndices[k]);
+			if (out->face_material)
+				out->face_material[f] = index_of[m->mMaterialIndex];
 			f++;
 		}
 		base += m->mNumVertices;
 	}
+	free(index_of);
 	out->nvertices = nv;
 	out->nnormals = keep_normals ? nv : 0;
+	out->nuvs = keep_uvs ? nv : 0;
 	out->nfaces = nf;
 }
 
@@ -260,6 +295,18 @@ static size_t nonfinite_vertices(const struct mesh_data *m)
 	size_t n = 0;
 	for (size_t i = 0; i < m->nvertices; i++)
 		n += !(isfinite(m->vertices[i][0]) && isfinite(m->vertices[i][1]) && isfinite(m->vertices[i][2]));
+	return n;
+}
+
+/* The number of m's vertices with a UV that is not finite. Such a UV names no texel,
+ * and POV-Ray refuses the mesh2 that would carry it, so the file is refused, as it is
+ * for a vertex; its UVs are not dropped quietly, as whether the scene looks them up
+ * (the file's textures, or a scene material's `map uv`) is not known here. */
+static size_t nonfinite_uvs(const struct mesh_data *m)
+{
+	size_t n = 0;
+	for (size_t i = 0; i < m->nuvs; i++)
+		n += !(isfinite(m->uvs[i][0]) && isfinite(m->uvs[i][1]));
 	return n;
 }
 
@@ -283,7 +330,7 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 		return mesh_header_fail(err, errlen, "mesh file '%s' has %zu vertices; at most %lu are supported", path, nv,
 				 (unsigned long)UINT32_MAX);
 	}
-	copy_scene(sc, normals_usable(sc), out);
+	copy_scene(sc, normals_usable(sc), path, out);
 	aiReleaseImport(sc);
 	if (out->nfaces == 0)
 		return mesh_header_fail(err, errlen, "no triangles in '%s'", path);
@@ -295,6 +342,13 @@ int mesh_import(const char *path, struct mesh_data *out, char *err, size_t errle
 		return mesh_header_fail(err, errlen, "mesh file '%s': %zu of its %zu vertices have coordinates that "
 		                        "are not finite (inf or nan, or beyond float's 3.4e38)", path, bad, n);
 	}
+	bad = nonfinite_uvs(out);
+	if (bad) {
+		size_t n = out->nvertices;
+		mesh_import_free(out);
+		return mesh_header_fail(err, errlen, "mesh file '%s': %zu of its %zu vertices have texture coordinates "
+		                        "that are not finite (inf or nan, or beyond float's 3.4e38)", path, bad, n);
+	}
 	return 0;
 }
 
@@ -302,6 +356,9 @@ void mesh_import_free(struct mesh_data *m)
 {
 	free(m->vertices);
 	free(m->normals);
+	free(m->uvs);
 	free(m->faces);
+	free(m->face_material);
+	mesh_material_free(m->materials, m->nmaterials);
 	memset(m, 0, sizeof *m);
 }

@@ -1,6 +1,6 @@
-/* mesh_join.c: joins the corners of an imported mesh that share a position (and normal),
- * in one pass with a hash table. assimp's JoinIdenticalVertices step did this before,
- * and took 0.52 s of a 1M-triangle PLY's 0.6 s import (it sorts the vertices in space
+/* mesh_join.c: joins the corners of an imported mesh that share a position (and normal
+ * and UV), in one pass with a hash table. assimp's JoinIdenticalVertices step did this
+ * before, and took 0.52 s of a 1M-triangle PLY's 0.6 s import (it sorts the vertices in space
  * and compares each with its neighbours); this takes a few hundredths. The result is
  * the one that step gives for the files we have (tests/unit/test_mesh_import.c):
  * vertices no face uses are dropped, the others keep their order, each joined to the
@@ -17,15 +17,23 @@
 
 #define UNUSED UINT32_MAX
 #define USED (UINT32_MAX - 1)
+#define KEY_MAX 8              /* position, normal, UV */
 
-/* The coordinates a vertex is joined by: its position, then its normal if any. */
-static int key_of(const struct mesh_data *m, uint32_t v, double key[6])
+/* The coordinates a vertex is joined by: its position, then its normal and its UV if
+ * any; returns their number. */
+static int key_of(const struct mesh_data *m, uint32_t v, double key[KEY_MAX])
 {
+	int n = 3;
 	memcpy(key, m->vertices[v], 3 * sizeof *key);
-	if (!m->normals)
-		return 3;
-	memcpy(key + 3, m->normals[v], 3 * sizeof *key);
-	return 6;
+	if (m->normals) {
+		memcpy(key + n, m->normals[v], 3 * sizeof *key);
+		n += 3;
+	}
+	if (m->uvs) {
+		memcpy(key + n, m->uvs[v], 2 * sizeof *key);
+		n += 2;
+	}
+	return n;
 }
 
 static uint64_t hash_key(const double *key, int n)
@@ -71,11 +79,11 @@ void mesh_join(struct mesh_data *m)
 	for (size_t v = 0; v < nv; v++) {
 		if (remap[v] == UNUSED)
 			continue;
-		double key[6];
+		double key[KEY_MAX];
 		int n = key_of(m, (uint32_t)v, key);
 		size_t i = hash_key(key, n) & (cap - 1);
 		for (; slot[i]; i = (i + 1) & (cap - 1)) {
-			double other[6];
+			double other[KEY_MAX];
 			key_of(m, slot[i] - 1, other);
 			if (same_key(key, other, n))
 				break;
@@ -88,6 +96,8 @@ void mesh_join(struct mesh_data *m)
 		memmove(m->vertices[kept], m->vertices[v], sizeof *m->vertices);
 		if (m->normals)
 			memmove(m->normals[kept], m->normals[v], sizeof *m->normals);
+		if (m->uvs)
+			memmove(m->uvs[kept], m->uvs[v], sizeof *m->uvs);
 		remap[v] = kept;
 		slot[i] = ++kept;
 	}
@@ -101,5 +111,9 @@ void mesh_join(struct mesh_data *m)
 	if (m->normals) {
 		m->nnormals = kept;
 		m->normals = xrealloc(m->normals, kept * sizeof *m->normals);
+	}
+	if (m->uvs) {
+		m->nuvs = kept;
+		m->uvs = xrealloc(m->uvs, kept * sizeof *m->uvs);
 	}
 }

@@ -15,3 +15,5 @@ TESTS += tests/cli/options.sh
 EXTRA_DIST += tests/cli/options.sh
 TESTS += tests/cli/anim.sh
 EXTRA_DIST += tests/cli/anim.sh
+TESTS += tests/cli/mesh_materials.sh
+EXTRA_DIST += tests/cli/mesh_materials.sh

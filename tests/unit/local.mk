@@ -51,3 +51,6 @@ check_PROGRAMS += tests/unit/test_torus
 TESTS += tests/unit/test_torus
 tests_unit_test_torus_SOURCES = tests/unit/test_torus.c tests/unit/torus_ref.h
 tests_unit_test_torus_LDADD = $(SCN_LIBS)
+EXTRA_DIST += tests/unit/meshes/materials.obj tests/unit/meshes/materials.mtl tests/unit/meshes/glass.obj \
+	tests/unit/meshes/glass.mtl tests/unit/meshes/uv.ply tests/unit/meshes/st.ply \
+	tests/unit/meshes/textured.gltf tests/unit/meshes/embedded.gltf tests/unit/meshes/textures/checker.png
