@@ -51,3 +51,7 @@ check_PROGRAMS += tests/unit/test_torus
 TESTS += tests/unit/test_torus
 tests_unit_test_torus_SOURCES = tests/unit/test_torus.c tests/unit/torus_ref.h
 tests_unit_test_torus_LDADD = $(SCN_LIBS)
+check_PROGRAMS += tests/unit/test_texture
+TESTS += tests/unit/test_texture
+tests_unit_test_texture_SOURCES = tests/unit/test_texture.c
+tests_unit_test_texture_LDADD = $(SCN_LIBS)
