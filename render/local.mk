@@ -1,6 +1,6 @@
 # render/local.mk: the renderer's core: scene, camera, sampler, tracer, render loop; and
 # lower.c, which builds the scene from the front end's description.
-RENDER_INCLUDES = -I$(srcdir)/%D% $(ACCEL_INCLUDES) $(IMAGE_INCLUDES)
+RENDER_INCLUDES = -I$(srcdir)/%D% $(ACCEL_INCLUDES) $(IMAGE_INCLUDES) $(TEXTURE_INCLUDES)
 noinst_LIBRARIES += render/libscnrender.a
 render_libscnrender_a_CPPFLAGS = $(BASE_CPPFLAGS) $(RENDER_INCLUDES)
 render_libscnrender_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)

@@ -42,14 +42,21 @@ struct pattern {
 };
 
 /* scn's gradient noise at p: Perlin's improved noise (2002) over scn's own permutation,
- * scaled into [0, 1], 0.5 on every lattice point; C1-continuous. */
+ * scaled into [0, 1], 0.5 on every lattice point; continuous, and C1 but where rare
+ * extrema are clamped into [0, 1] (doc/noise.md). */
 double noise_value(struct vec3 p);
 /* The noise's gradient at p (the derivative of noise_value). */
 struct vec3 noise_gradient(struct vec3 p);
-/* POV-Ray's turbulence over noise: sum over octaves of |noise - 0.5| scaled by omega^i
- * at frequency lambda^i, as a displacement vector (DTurbulence) applied to p by
- * pattern_value when pt->turbulent. */
+/* A vector noise: each component 2 noise_value - 1 (in [-1, 1], 0 on average) at p plus an
+ * offset of its own, the role POV-Ray's DNoise plays. */
+struct vec3 noise_vector(struct vec3 p);
+/* POV-Ray's DTurbulence on noise_vector: the sum over octaves i = 1..octaves of
+ * omega^(i-1) noise_vector(lambda^(i-1) p), a displacement that pattern_value scales by
+ * pt->turbulence and adds to q when pt->turbulent (wood has its own use of it). */
 struct vec3 noise_turbulence(struct vec3 p, int octaves, double omega, double lambda);
+/* POV-Ray's scalar Turbulence (marble's and agate's): clamp(2 noise - 0.5, 0, 1) at p plus
+ * omega^(i-1) (2 noise(lambda^(i-1) p) - 0.5) for octaves i = 2..octaves. */
+double noise_fbm(struct vec3 p, int octaves, double omega, double lambda);
 
 /* The value of a colour pattern at q, a point in the pattern's space (after to_pattern):
  * turbulence, the pattern, then frequency, phase and POV-Ray's wrap, in [0, 1]. */
@@ -61,6 +68,12 @@ struct vec3 pattern_map(const struct pattern *pt, double v);
  * pattern space to be mapped to world space as a normal is (the transpose of the map from
  * world to pattern space) and added to the unit shading normal before renormalising. */
 struct vec3 pattern_bump(const struct pattern *pt, struct vec3 q);
+/* The unit shading normal that POV-Ray's rule gives n (a unit normal in the space that
+ * to_pattern maps from) under pt's bumps at q (pattern space): n taken into the pattern's
+ * space and normalised, pattern_bump added, the sum brought back and normalised. Unlike
+ * adding pattern_bump mapped back to n, it leaves the bumps' depth alone when the pattern
+ * is scaled (`normal { bumps 0.6  scale 0.1 }` is as deep as without the scale). */
+struct vec3 pattern_bump_normal(const struct pattern *pt, struct vec3 q, struct vec3 n);
 
 /* Image maps: map_type 0, 1, 2 and uv_mapping. */
 enum texture_map { TEXTURE_MAP_PLANAR, TEXTURE_MAP_SPHERICAL, TEXTURE_MAP_CYLINDRICAL, TEXTURE_MAP_UV };

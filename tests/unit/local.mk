@@ -54,3 +54,7 @@ tests_unit_test_torus_LDADD = $(SCN_LIBS)
 EXTRA_DIST += tests/unit/meshes/materials.obj tests/unit/meshes/materials.mtl tests/unit/meshes/glass.obj \
 	tests/unit/meshes/glass.mtl tests/unit/meshes/uv.ply tests/unit/meshes/st.ply \
 	tests/unit/meshes/textured.gltf tests/unit/meshes/embedded.gltf tests/unit/meshes/textures/checker.png
+check_PROGRAMS += tests/unit/test_texture
+TESTS += tests/unit/test_texture
+tests_unit_test_texture_SOURCES = tests/unit/test_texture.c
+tests_unit_test_texture_LDADD = $(SCN_LIBS)
