@@ -11,6 +11,7 @@
 #include "camera.h"
 #include "clock.h"
 #include "image_file.h"
+#include "lower_texture.h"
 #include "memory.h"
 #include "mesh_import.h"
 #include "part_make.h"
@@ -22,13 +23,15 @@ struct mesh_cache_entry {
 	struct mesh_data data;
 	bool ok;
 	int32_t source[2];             /* its scene mesh number, flat and smooth; -1: none yet */
+	int32_t *materials[2];         /* the scene material of each of the file's materials, its
+	                                * textures looked up nearest and bilinear; -1: none yet */
 };
 
 struct lowering {
 	struct diag *diag;
 	const struct scene_desc *desc;
 	struct scene *sc;
-	size_t cap_surfaces, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
+	size_t cap_surfaces, cap_uvs, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
 	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded, cap_part_triangles, cap_csg_boxes;
 	int *material_map;             /* desc material -> scene material, or -1 */
 	int default_material;          /* the scene material for objects without one, or -1 */
@@ -36,6 +39,7 @@ struct lowering {
 	size_t nmesh_cache, cap_mesh_cache;
 	double mesh_seconds;
 	bool too_big;                  /* a mesh file or the sky image needs more memory than there is */
+	struct texture_lowering tex;
 };
 
 /* The scene description's transform as the renderer's affine map (the same layout). */
@@ -67,14 +71,28 @@ static bool xform_mirrors(const struct xform *x)
 	return affine_mirrors(&a);
 }
 
-static struct material lower_material(const struct material_desc *m)
+static struct material lower_material(struct lowering *lw, const struct material_desc *m)
 {
+	/* ORDER: enum pigment_kind and enum material_pigment alike */
+	static const uint8_t pigments[] = {
+		[PIGMENT_COLOR] = MATERIAL_COLOR, [PIGMENT_CHECKER] = MATERIAL_CHECKER,
+		[PIGMENT_PATTERN] = MATERIAL_PATTERN, [PIGMENT_IMAGE] = MATERIAL_IMAGE,
+	};
 	struct material out = {
 		.diffuse = v3a(m->diffuse), .diffuse2 = v3a(m->diffuse2), .checker_size = m->checker_size,
-		.checker = m->pigment == PIGMENT_CHECKER, .fresnel = m->fresnel, .specular = v3a(m->specular),
-		.reflect = v3a(m->reflect), .transmit = v3a(m->transmit), .emit = v3a(m->emit),
-		.shininess = m->shininess, .ior = m->ior,
+		.pigment = pigments[m->pigment], .texture = -1, .bump = -1, .fresnel = m->fresnel,
+		.specular = v3a(m->specular), .reflect = v3a(m->reflect), .transmit = v3a(m->transmit),
+		.emit = v3a(m->emit), .shininess = m->shininess, .ior = m->ior,
 	};
+	if (m->pigment == PIGMENT_PATTERN)
+		out.texture = lower_texture_pattern(&lw->tex, m->pattern);
+	if (m->pigment == PIGMENT_IMAGE) {
+		out.texture = lower_texture_image(&lw->tex, m->pattern);
+		if (out.texture < 0) /* reported; the render does not happen */
+			out.pigment = MATERIAL_COLOR;
+	}
+	if (m->normal >= 0)
+		out.bump = lower_texture_pattern(&lw->tex, m->normal);
 	return out;
 }
 
@@ -85,24 +103,24 @@ static uint32_t material_of(struct lowering *lw, int desc_index)
 	int *slot = desc_index >= 0 ? &lw->material_map[desc_index] : &lw->default_material;
 	if (*slot < 0) {
 		/* LANGUAGE.md's default material: diffuse 0.8 grey, nothing else */
-		static const struct material default_material = {
+		static const struct material default_material = { .texture = -1, .bump = -1,
 			.diffuse = { 0.8, 0.8, 0.8 }, .shininess = 50, .ior = 1,
 		};
 		/* doubling: 100000 inline materials must not be copied 100000 times */
 		xgrow((void **)&sc->materials, &lw->cap_materials, sc->nmaterials + 1, sizeof *sc->materials);
-		sc->materials[sc->nmaterials] = desc_index >= 0 ? lower_material(&lw->desc->materials[desc_index])
+		sc->materials[sc->nmaterials] = desc_index >= 0 ? lower_material(lw, &lw->desc->materials[desc_index])
 		                                                : default_material;
 		*slot = (int)sc->nmaterials++;
 	}
 	return (uint32_t)*slot;
 }
 
-static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
+/* A surface of object o made of scene material mat. */
+static uint32_t add_surface_of(struct lowering *lw, const struct object_desc *o, uint32_t mat)
 {
 	struct scene *sc = lw->sc;
-	uint32_t mat = material_of(lw, o->material);
 	int32_t to_object = -1;
-	if (sc->materials[mat].checker && o->pattern_xform >= 0) {
+	if (material_textured(&sc->materials[mat]) && o->pattern_xform >= 0) {
 		xgrow((void **)&sc->affines, &lw->cap_affines, sc->naffines + 1, sizeof *sc->affines);
 		sc->affines[sc->naffines] = xform_inverse(&lw->desc->xforms[o->pattern_xform]);
 		to_object = (int32_t)sc->naffines++;
@@ -110,6 +128,12 @@ static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
 	xgrow((void **)&sc->geo.surfaces, &lw->cap_surfaces, sc->geo.nsurfaces + 1, sizeof *sc->geo.surfaces);
 	sc->geo.surfaces[sc->geo.nsurfaces] = (struct surface){ mat, to_object };
 	return (uint32_t)sc->geo.nsurfaces++;
+}
+
+/* A surface of object o made of its material. */
+static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
+{
+	return add_surface_of(lw, o, material_of(lw, o->material));
 }
 
 static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
@@ -203,7 +227,7 @@ static const struct mesh_data *mesh_data_of(struct lowering *lw, const struct ob
 	const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
 	*inline_data = (struct mesh_data){
 		.vertices = m->vertices, .nvertices = m->nvertices, .normals = m->normals,
-		.nnormals = m->nnormals, .faces = m->faces, .nfaces = m->nfaces,
+		.nnormals = m->nnormals, .faces = m->faces, .nfaces = m->nfaces, .uvs = m->uvs,
 	};
 	return m->file ? mesh_file(lw, m) : inline_data;
 }
@@ -296,6 +320,100 @@ static void warn_no_area(struct lowering *lw, struct span at, size_t dropped, si
 /* Mesh object o, as triangles of the scene, or with part (a solid's part, whose inside
  * its inside_vector decides) as the triangles of that mesh part, whose range it sets;
  * false when it is not drawn. */
+/* The scene material of a mesh file's material mm (LANGUAGE.md 11): its colours, its
+ * opacity as transmit, and its diffuse texture, if any, looked up by the file's UVs; the
+ * texture replaces the diffuse colour, as in POV-Ray's twin (an image map cannot be
+ * multiplied by a colour there). */
+static struct material file_material(struct lowering *lw, const struct mesh_desc *m, const struct mesh_data *data,
+                                     const struct mesh_material *mm, struct span at)
+{
+	struct material out = {
+		.diffuse = v3a(mm->diffuse), .pigment = MATERIAL_COLOR, .texture = -1, .bump = -1,
+		.specular = v3a(mm->specular), .shininess = mm->exponent, .transmit = v3s(1 - mm->opacity),
+		.ior = mm->ior, .emit = v3a(mm->emission),
+	};
+	if (!mm->texture)
+		return out;
+	if (!data->uvs) {
+		diag_warning(lw->diag, at, "mesh file '%s' gives texture '%s' but no texture coordinates: its diffuse "
+		             "colour is used instead", m->file, mm->texture);
+		return out;
+	}
+	if (!mm->texture_path && !mm->texture_data) {
+		diag_error(lw->diag, at, "cannot read texture '%s' of mesh file '%s': it is embedded as %s, and only "
+		           "PNG can be", mm->texture, m->file, *mm->texture_format ? mm->texture_format : "raw texels");
+		return out;
+	}
+	/* an embedded texture is known by its file and its name there */
+	char *key = NULL;
+	if (mm->texture_data) {
+		key = xmalloc(strlen(m->path) + strlen(mm->texture) + 2);
+		sprintf(key, "%s#%s", m->path, mm->texture);
+	}
+	int32_t im = lower_texture_mesh_image(&lw->tex, key ? key : mm->texture_path, mm->texture_data, mm->texture_size,
+	                                      mm->texture, m->file, m->bilinear, at);
+	free(key);
+	if (im >= 0) {
+		out.pigment = MATERIAL_IMAGE;
+		out.texture = im;
+	}
+	return out;
+}
+
+/* The scene material of material k of the file of mesh object o, made on first use. */
+static uint32_t file_material_of(struct lowering *lw, const struct object_desc *o, uint32_t k)
+{
+	const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
+	struct mesh_cache_entry *entry = mesh_cached(lw, m->path);
+	int32_t **slots = &entry->materials[m->bilinear];
+	if (!*slots) {
+		*slots = xmalloc(entry->data.nmaterials * sizeof **slots);
+		for (size_t i = 0; i < entry->data.nmaterials; i++)
+			(*slots)[i] = -1;
+	}
+	if ((*slots)[k] < 0) {
+		struct scene *sc = lw->sc;
+		xgrow((void **)&sc->materials, &lw->cap_materials, sc->nmaterials + 1, sizeof *sc->materials);
+		sc->materials[sc->nmaterials] = file_material(lw, m, &entry->data, &entry->data.materials[k], m->file_span);
+		(*slots)[k] = (int32_t)sc->nmaterials++;
+	}
+	return (uint32_t)(*slots)[k];
+}
+
+/* Whether object o's material is an image map looked up by UV coordinates. */
+static bool maps_uv(const struct lowering *lw, const struct object_desc *o)
+{
+	if (o->material < 0)
+		return false;
+	const struct material_desc *m = &lw->desc->materials[o->material];
+	return m->pigment == PIGMENT_IMAGE && lw->desc->images[m->pattern].map == IMAGE_MAP_UV;
+}
+
+/* The texture coordinates of mesh data (its vertices from base on) into geo.uvs, the
+ * vertices before them without any; false, after an error at o, when o's material needs
+ * them and there are none, or the mesh is a CSG's part, whose hits carry no triangle. */
+static bool mesh_uvs(struct lowering *lw, const struct object_desc *o, const struct mesh_data *data, uint32_t base,
+                     bool part)
+{
+	struct geometry *g = &lw->sc->geo;
+	if (maps_uv(lw, o) && (part || !data->uvs)) {
+		const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
+		if (part)
+			diag_error(lw->diag, o->span, "'map uv' is not available on a mesh inside a CSG; use another map");
+		else
+			diag_error(lw->diag, o->span, "'map uv' needs texture coordinates, and mesh file '%s' has none", m->file);
+		return false;
+	}
+	if (!data->uvs || part)
+		return true;
+	xgrow((void **)&g->uvs, &lw->cap_uvs, g->nvertices, sizeof *g->uvs);
+	memset(&g->uvs[g->nuvs], 0, (base - g->nuvs) * sizeof *g->uvs);
+	for (size_t i = 0; i < data->nvertices; i++)
+		g->uvs[base + i] = (struct uv){ data->uvs[i][0], data->uvs[i][1] };
+	g->nuvs = g->nvertices;
+	return true;
+}
+
 static bool lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at, struct part *part)
 {
 	struct mesh_data inline_data;
@@ -308,6 +426,15 @@ static bool lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 	struct affine inv = xform_inverse(x);
 	bool mirrored = xform_mirrors(x);
 	uint32_t surface = add_surface(lw, o);
+	/* a file's own materials, unless the mesh statement gives one: a surface for each
+	 * (LANGUAGE.md 11), made when a face first uses it */
+	bool own = data->face_material && (o->material < 0 || o->inherited) && !part;
+	uint32_t *file_surfaces = NULL;
+	if (own) {
+		file_surfaces = xmalloc(data->nmaterials * sizeof *file_surfaces);
+		for (size_t k = 0; k < data->nmaterials; k++)
+			file_surfaces[k] = UINT32_MAX;
+	}
 	uint32_t base = (uint32_t)sc->geo.nvertices;
 	double extent = 0;
 	for (size_t i = 0; i < data->nvertices; i++) {
@@ -315,8 +442,10 @@ static bool lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 		extent = fmax(extent, extent_of(sc->geo.vertices[v]));
 	}
 	/* beyond it, its triangles' areas are lost to rounding: not the file's fault */
-	if (!check_extent(lw, *at, "this mesh", extent))
+	if (!check_extent(lw, *at, "this mesh", extent) || !mesh_uvs(lw, o, data, base, part != NULL)) {
+		free(file_surfaces);
 		return false;
+	}
 
 	uint32_t nbase = (uint32_t)sc->geo.nnormals;
 	if (o->smooth) {
@@ -360,11 +489,19 @@ static bool lower_mesh(struct lowering *lw, const struct object_desc *o, const s
 			v[1] = v[2], n[1] = n[2];
 			v[2] = t, n[2] = tn;
 		}
-		if (!add_triangle(lw, v, n, surface, part != NULL)) {
+		uint32_t face_surface = surface;
+		uint32_t k = own ? data->face_material[f] : MESH_NO_MATERIAL;
+		if (k != MESH_NO_MATERIAL) {
+			if (file_surfaces[k] == UINT32_MAX)
+				file_surfaces[k] = add_surface_of(lw, o, file_material_of(lw, o, k));
+			face_surface = file_surfaces[k];
+		}
+		if (!add_triangle(lw, v, n, face_surface, part != NULL)) {
 			dropped++;
 			coinciding += corners_coincide(sc->geo.vertices[v[0]], sc->geo.vertices[v[1]], sc->geo.vertices[v[2]]);
 		}
 	}
+	free(file_surfaces);
 	if (dropped)
 		warn_no_area(lw, *at, dropped, coinciding, data->nfaces);
 	if (part) {
@@ -735,11 +872,18 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 			check_extent(&lw, l->span, "this light", extent_of(li->pos));
 	}
 
+	lower_texture_begin(&lw.tex, d, desc, out);
 	lw.material_map = xmalloc((desc->nmaterials ? desc->nmaterials : 1) * sizeof *lw.material_map);
 	for (size_t i = 0; i < desc->nmaterials; i++)
 		lw.material_map[i] = -1;
 	for (size_t i = 0; i < desc->nobjects && !too_big; i = next_object(desc, i))
 		lower_object(&lw, i);
+	/* the vertices added after the last mesh with UVs have none */
+	if (out->geo.uvs) {
+		xgrow((void **)&out->geo.uvs, &lw.cap_uvs, out->geo.nvertices, sizeof *out->geo.uvs);
+		memset(&out->geo.uvs[out->geo.nuvs], 0, (out->geo.nvertices - out->geo.nuvs) * sizeof *out->geo.uvs);
+		out->geo.nuvs = out->geo.nvertices;
+	}
 	out->geo.transmit = xcalloc(out->nmaterials, sizeof *out->geo.transmit);
 	for (size_t m = 0; m < out->nmaterials; m++)
 		out->geo.transmit[m] = out->materials[m].transmit;
@@ -747,7 +891,9 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	times->load_meshes = lw.mesh_seconds;
 	double t0 = clock_now();
 	lower_sky(&lw);
-	times->load_images = clock_now() - t0;
+	times->load_images = clock_now() - t0 + lw.tex.seconds;
+	lw.too_big = lw.too_big || lw.tex.too_big;
+	lower_texture_end(&lw.tex);
 
 	static const enum sample_kind kinds[PATTERN_COUNT] = {
 		[PATTERN_CENTER] = SAMPLE_CENTER, [PATTERN_GRID] = SAMPLE_GRID, [PATTERN_RANDOM] = SAMPLE_RANDOM,
@@ -760,8 +906,11 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	if (other_bytes >= 0 && d->errors == errors)
 		warn_dark(&lw);
 
-	for (size_t i = 0; i < lw.nmesh_cache; i++)
+	for (size_t i = 0; i < lw.nmesh_cache; i++) {
 		mesh_import_free(&lw.mesh_cache[i].data);
+		free(lw.mesh_cache[i].materials[0]);
+		free(lw.mesh_cache[i].materials[1]);
+	}
 	free(lw.mesh_cache);
 	free(lw.material_map);
 	if (out->geo.nspheres + out->geo.ntriangles + out->geo.nplanes + out->geo.nsolids >= (1u << SHAPE_KIND_SHIFT) ||

@@ -19,6 +19,15 @@ void scene_free(struct scene *s)
 	free(s->mesh_uses);
 	geometry_free(&s->geo);
 	free(s->sky.texels);
+	free(s->patterns);
+	free(s->colour_stops);
+	free(s->image_maps);
+	for (size_t i = 0; i < s->nimages; i++) {
+		image_free(s->images[i]);
+		free(s->image_paths[i]);
+	}
+	free(s->images);
+	free(s->image_paths);
 	accel_free(&s->accel);
 	memset(s, 0, sizeof *s);
 }

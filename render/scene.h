@@ -16,6 +16,7 @@
 #include "geometry.h"
 #include "image.h"
 #include "sampler.h"
+#include "texture.h"
 
 enum light_kind { LIGHT_POINT, LIGHT_DIRECTIONAL };
 
@@ -27,13 +28,29 @@ struct light {
 	bool shadowless;               /* a fill light: no shadow test, no highlight */
 };
 
+/* What a material's k_d is: a colour, a checker of two, a pattern through its colour map,
+ * or an image map. */
+enum material_pigment { MATERIAL_COLOR, MATERIAL_CHECKER, MATERIAL_PATTERN, MATERIAL_IMAGE };
+
 struct material {
-	struct vec3 diffuse, diffuse2; /* k_d; diffuse2 is a checker's second colour */
+	struct vec3 diffuse, diffuse2; /* k_d; diffuse2 is a checker's second colour; diffuse is
+	                                * also an image map's colour outside a `once` image */
 	double checker_size;
-	bool checker, fresnel;
+	uint8_t pigment;               /* enum material_pigment */
+	bool fresnel;
+	int32_t texture;               /* MATERIAL_PATTERN: into scene.patterns; MATERIAL_IMAGE:
+	                                * into scene.image_maps */
+	int32_t bump;                  /* a bump pattern perturbing the shading normal, into
+	                                * scene.patterns; -1: none */
 	struct vec3 specular, reflect, transmit, emit;
 	double shininess, ior;
 };
+
+/* Whether m varies over a surface, and so needs the object's own space (surface.to_object). */
+static inline bool material_textured(const struct material *m)
+{
+	return m->pigment != MATERIAL_COLOR || m->bump >= 0;
+}
 
 /* An object made of a mesh file, as lowering placed it: its triangles are those of surface,
  * in world space, where to_world put the file's vertices (to_object maps back). Uses with
@@ -71,6 +88,17 @@ struct scene {
 	struct mesh_use *mesh_uses;
 	size_t nmesh_uses, nmesh_sources;
 	struct sky sky;
+	/* textures (texture.h): patterns (colour and bump), their colour maps, image maps, and
+	 * the images those read, each file once */
+	struct pattern *patterns;
+	size_t npatterns;
+	struct colour_stop *colour_stops;
+	size_t ncolour_stops;
+	struct image_map *image_maps;
+	size_t nimage_maps;
+	struct image **images;
+	char **image_paths;            /* the file each image was read from (for scn pov) */
+	size_t nimages;
 	struct sampling sampling;
 	int max_depth;
 	struct accel accel;            /* built by accel_build after lowering */

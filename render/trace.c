@@ -7,6 +7,7 @@
 #include <math.h>
 
 #include "accel.h"
+#include "shade.h"
 
 struct vec3 trace_sky(const struct sky *sky, struct vec3 d)
 {
@@ -47,20 +48,6 @@ struct vec3 trace_sky(const struct sky *sky, struct vec3 d)
 	}
 	}
 	return v3s(0);
-}
-
-/* k_d at p: a checker is evaluated in the object's own space, with POV-Ray's 1e-10
- * bias so that points a rounding error below a cell boundary count as above it. */
-static struct vec3 diffuse_at(const struct scene *sc, const struct surface *srf, const struct material *m,
-                              struct vec3 p)
-{
-	if (!m->checker)
-		return m->diffuse;
-	if (srf->to_object >= 0)
-		p = affine_point(&sc->affines[srf->to_object], p);
-	double s = m->checker_size;
-	double sum = floor(p.x / s + 1e-10) + floor(p.y / s + 1e-10) + floor(p.z / s + 1e-10);
-	return fmod(sum, 2) == 0 ? m->diffuse : m->diffuse2;
 }
 
 /* Unpolarised dielectric reflectance for relative index eta = n_t / n_i at incidence
@@ -144,17 +131,19 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, &h)];
 	const struct material *m = &sc->materials[srf->material];
 
-	/* the shading normal turned towards the viewer; inside or outside from the
-	 * geometric normal */
+	/* the shading normal (bumped, if the material says so) turned towards the viewer, the
+	 * side decided before the bump; inside or outside from the geometric normal */
 	bool entering = vdot(r->d, sp.ng) < 0;
 	bool back = vdot(sp.ns, r->d) > 0;
-	struct vec3 n = back ? vneg(sp.ns) : sp.ns;
+	struct vec3 ns = m->bump >= 0 ? shade_bump(sc, srf, m, sp.p, sp.ns) : sp.ns;
+	struct vec3 n = back ? vneg(ns) : ns;
 	struct vec3 v = vneg(r->d);
 	struct vec3 color = m->emit;
 	if (sc->nlights) {
 		struct surface_point shadow_from = sp;
 		shape_shadow_point(&sc->geo, &h, back ? -1 : 1, &shadow_from);
-		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, diffuse_at(sc, srf, m, sp.p), m, st));
+		struct vec3 kd = m->pigment == MATERIAL_COLOR ? m->diffuse : shade_diffuse(sc, srf, m, &h, &sp);
+		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, st));
 	}
 	if (depth >= sc->max_depth)
 		return color;
@@ -164,6 +153,15 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 	if (cos_i > 1)
 		cos_i = 1;
 	struct vec3 mirror = vsub(r->d, vscale(n, 2 * vdot(r->d, n)));
+	/* a shading normal that is not the geometric one (interpolated, bumped) can send the
+	 * mirror ray below the surface: POV-Ray's rule (trace.cpp's reflection fix) mirrors it
+	 * about the geometric normal instead when it also lies behind the shading normal, and
+	 * else reflects it back above the surface across the geometric plane */
+	struct vec3 raw = entering ? sp.ng : vneg(sp.ng);
+	double below = vdot(mirror, raw);
+	if (below < 0)
+		mirror = vdot(mirror, n) < 0 ? vsub(r->d, vscale(raw, 2 * vdot(r->d, raw)))
+		                             : vsub(mirror, vscale(raw, 2 * below));
 	if (any_positive(kt) || m->fresnel) {
 		double eta = entering ? 1 / m->ior : m->ior; /* n_i / n_t */
 		double k = 1 - eta * eta * (1 - cos_i * cos_i);

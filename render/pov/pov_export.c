@@ -26,6 +26,7 @@
 #include "pov_material.h"
 #include "pov_mesh.h"
 #include "pov_solid.h"
+#include "pov_texture.h"
 #include "pov_write.h"
 #include "xalloc.h"
 
@@ -190,7 +191,7 @@ static bool on_checker_boundary(const struct scene *sc, size_t first, size_t las
 {
 	const struct surface *s = &sc->geo.surfaces[sc->geo.triangles[first].surface];
 	const struct material *m = &sc->materials[s->material];
-	if (!m->checker)
+	if (m->pigment != MATERIAL_CHECKER)
 		return false;
 	for (size_t i = first; i < last; i++) {
 		struct vec3 c[3];
@@ -437,48 +438,6 @@ static void write_camera(struct pov *p)
 	fputs(" }\n", f);
 }
 
-/* The sky image's path as the .pov must name it: relative to the .pov's folder when
- * both resolve, else (or without a folder) absolute. */
-static char *image_reference(const char *image, const char *pov_dir)
-{
-	char *t = realpath(image, NULL);
-	char *d = pov_dir ? realpath(*pov_dir ? pov_dir : ".", NULL) : NULL;
-	if (!t) {
-		free(d);
-		if (image[0] == '/')
-			return xstrdup(image);
-		char cwd[PATH_MAX];
-		if (!getcwd(cwd, sizeof cwd))
-			return xstrdup(image);
-		char *abs = xmalloc(strlen(cwd) + strlen(image) + 2);
-		sprintf(abs, "%s/%s", cwd, image);
-		return abs;
-	}
-	if (!d)
-		return t;
-	size_t dl = strlen(d);
-	char *ds = xmalloc(dl + 2);
-	memcpy(ds, d, dl + 1);
-	if (dl == 0 || ds[dl - 1] != '/')
-		strcpy(ds + dl, "/");
-	size_t k = 0;                  /* the common prefix, up to a '/' */
-	for (size_t i = 0; t[i] && ds[i] && t[i] == ds[i]; i++)
-		if (t[i] == '/')
-			k = i + 1;
-	size_t ups = 0;
-	for (const char *s = ds + k; *s; s++)
-		ups += *s == '/';
-	char *rel = xmalloc(3 * ups + strlen(t + k) + 1);
-	rel[0] = '\0';
-	for (size_t i = 0; i < ups; i++)
-		strcat(rel, "../");
-	strcat(rel, t + k);
-	free(t);
-	free(d);
-	free(ds);
-	return rel;
-}
-
 static void write_sky(struct pov *p)
 {
 	const struct sky *sky = &p->sc->sky;
@@ -494,20 +453,8 @@ static void write_sky(struct pov *p)
 		pov_vec(f, sky->color);
 		fputs("] } } }\n", f);
 	} else if (sky->kind == SKY_LATLONG) {
-		enum image_format kind = sky->file.format;
-		double gamma = sky->file.png_gamma;
-		char *ref = image_reference(p->opt->sky_image, p->opt->pov_dir);
 		fputs("sky_sphere { pigment { image_map { ", f);
-		fputs(kind == IMAGE_PNG ? "png " : kind == IMAGE_EXR ? "exr " : "ppm ", f);
-		pov_str(f, ref);
-		free(ref);
-		/* decode as scn does: EXR is linear; PPM is sRGB; a PNG by its chunks */
-		if (kind == IMAGE_PPM || (kind == IMAGE_PNG && gamma == 0))
-			fputs(" gamma srgb", f);
-		else if (kind == IMAGE_PNG) {
-			fputs(" gamma ", f);
-			pov_num(f, 1 / gamma);
-		}
+		pov_image_file(f, &sky->file, p->opt->sky_image, p->opt->pov_dir);
 		fputs(" map_type 1 interpolate 2 } }", f);
 		if (sky->intensity != 1) {
 			fputs(" emission rgb ", f);
@@ -709,7 +656,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	for (size_t i = 0; i < sc->geo.nsolids + sc->geo.nunbounded; i++)
 		pov_solid_one_body(sc, i < sc->geo.nsolids ? sc->geo.solids[i] : sc->geo.unbounded[i - sc->geo.nsolids], shared);
 	for (size_t i = 0; i < sc->nmaterials; i++)
-		pov_write_material(out, i, &sc->materials[i], shared[i]);
+		pov_write_material(out, sc, i, shared[i], p.opt->pov_dir);
 	free(shared);
 	write_objects(&p);
 	free(p.how);

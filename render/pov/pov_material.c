@@ -6,6 +6,7 @@
 
 #include <stdbool.h>
 
+#include "pov_texture.h"
 #include "pov_write.h"
 
 /* A colour channel this small stands in for zero where a layer must not filter to
@@ -42,33 +43,68 @@ static bool single_layer(const struct material *m)
 	if (!grey(m->specular) || !grey(m->transmit))
 		return false;
 	double t = m->transmit.x;
-	bool no_diffuse = vzero(m->diffuse) && (!m->checker || vzero(m->diffuse2));
+	bool no_diffuse = vzero(m->diffuse) && (m->pigment != MATERIAL_CHECKER || vzero(m->diffuse2));
 	if (t < 0 || (t >= 1 && !no_diffuse))
 		return false;
 	if (vzero(m->emit))
 		return true;
-	if (m->checker || t >= 1)
+	if (m->pigment != MATERIAL_COLOR || t >= 1) /* emission would follow a varying pigment */
 		return false;
 	return (m->emit.x == 0 || m->diffuse.x != 0) && (m->emit.y == 0 || m->diffuse.y != 0) &&
 	       (m->emit.z == 0 || m->diffuse.z != 0);
 }
 
-/* A pigment of diffuse colours divided by div, with transmit t: plain or checker. */
-static void diffuse_pigment(FILE *f, const struct material *m, double div, double t)
+/* Where the .pov is written and what it shows: for the textures' files. */
+struct pov_material_context {
+	const struct scene *sc;
+	const char *pov_dir;
+};
+
+/* A pigment of diffuse colours divided by div, with transmit t: plain, checker, a pattern
+ * through its colour map, or an image map (whose texels the finish's diffuse divides:
+ * diffuse_weight), then the bump pattern's normal. */
+static void diffuse_pigment(FILE *f, const struct pov_material_context *cx, const struct material *m, double div,
+                            double t)
 {
-	fputs("pigment { ", f);
-	if (m->checker) {
-		fputs("checker rgbt ", f);
+	switch (m->pigment) {
+	case MATERIAL_CHECKER:
+		fputs("pigment { checker rgbt ", f);
 		pov_vec4(f, vdiv(m->diffuse, div), t);
 		fputs(", rgbt ", f);
 		pov_vec4(f, vdiv(m->diffuse2, div), t);
 		fputs(" scale ", f);
 		pov_num(f, m->checker_size);
-	} else {
-		fputs("rgbt ", f);
+		fputs(" }", f);
+		break;
+	case MATERIAL_PATTERN:
+		pov_pattern_pigment(f, &cx->sc->patterns[m->texture], div, t);
+		break;
+	case MATERIAL_IMAGE:
+		pov_image_pigment(f, cx->sc, &cx->sc->image_maps[m->texture], t, cx->pov_dir);
+		break;
+	default:
+		fputs("pigment { rgbt ", f);
 		pov_vec4(f, vdiv(m->diffuse, div), t);
+		fputs(" }", f);
 	}
-	fputs(" }", f);
+	if (m->bump >= 0)
+		pov_bump_normal(f, &cx->sc->patterns[m->bump]);
+}
+
+/* The finish's diffuse for a pigment divided by div: 1, as the colours are divided, but
+ * 1 / div for an image map, whose texels cannot be. */
+static void diffuse_weight(FILE *f, const struct material *m, double div)
+{
+	fputs(" diffuse ", f);
+	pov_num(f, m->pigment == MATERIAL_IMAGE ? 1 / div : 1);
+}
+
+/* An image map with `once` leaves the plain diffuse colour outside the image: POV-Ray's
+ * image is clear there, so a layer of that colour lies under it, with no highlight or
+ * mirror of its own (POV-Ray computes a clear layer's, measured). Exact with t = 0 only. */
+static bool image_once(const struct pov_material_context *cx, const struct material *m)
+{
+	return m->pigment == MATERIAL_IMAGE && cx->sc->image_maps[m->texture].once;
 }
 
 static void roughness(FILE *f, double shininess)
@@ -85,23 +121,32 @@ static void fresnel_reflection(FILE *f, const struct material *m)
 	fputs(" fresnel on } conserve_energy", f);
 }
 
-static void write_single_layer(FILE *f, const struct material *m)
+static void write_single_layer(FILE *f, const struct pov_material_context *cx, const struct material *m)
 {
 	double t = m->transmit.x;
 	double s = m->specular.x;
+	if (image_once(cx, m) && t < 1) {
+		fputs("  texture { pigment { rgbt ", f);
+		pov_vec4(f, vdiv(m->diffuse, 1 - t), t);
+		fputs(" }", f);
+		if (m->bump >= 0)
+			pov_bump_normal(f, &cx->sc->patterns[m->bump]);
+		fputs(" finish { ambient 0 diffuse 1 brilliance 1 specular 0 phong 0 } }\n", f);
+	}
 	fputs("  texture {\n    ", f);
 	if (t >= 1) {                  /* no diffuse: nothing to divide by 1 - t */
 		fputs("pigment { rgbt ", f);
 		pov_vec4(f, v3s(0), t);
 		fputs(" }", f);
 	} else
-		diffuse_pigment(f, m, 1 - t, t);
+		diffuse_pigment(f, cx, m, 1 - t, t);
 	fputs("\n    finish { ambient 0", f);
 	if (!vzero(m->emit)) {
 		fputs(" emission rgb ", f);
 		pov_vec(f, safe_div(m->emit, m->diffuse));
 	}
-	fputs(" diffuse 1 brilliance 1 specular ", f);
+	diffuse_weight(f, m, t < 1 ? 1 - t : 1);
+	fputs(" brilliance 1 specular ", f);
 	pov_num(f, s);
 	if (s != 0)
 		roughness(f, m->shininess);
@@ -118,7 +163,7 @@ static void write_single_layer(FILE *f, const struct material *m)
 
 /* The general recipe: four layers, bottom first: S (highlight, transmission, Fresnel
  * reflection), F (filters S by k_s), D (diffuse and plain reflection), E (emission). */
-static void write_layers(FILE *f, const struct material *m)
+static void write_layers(FILE *f, const struct pov_material_context *cx, const struct material *m)
 {
 	bool has_emit = !vzero(m->emit);
 	bool has_fs = !vzero(m->specular) || !vzero(m->transmit) || m->fresnel;
@@ -145,8 +190,10 @@ static void write_layers(FILE *f, const struct material *m)
 		fputs(" }\n            finish { ambient 0 diffuse 0 specular 0 phong 0 } }\n", f);
 	}
 	fputs("  texture { ", f);                                                     /* D */
-	diffuse_pigment(f, m, (1 - tD) * tE, tD);
-	fputs("\n            finish { ambient 0 diffuse 1 brilliance 1 specular 0 phong 0", f);
+	diffuse_pigment(f, cx, m, (1 - tD) * tE, tD);
+	fputs("\n            finish { ambient 0", f);
+	diffuse_weight(f, m, (1 - tD) * tE);
+	fputs(" brilliance 1 specular 0 phong 0", f);
 	if (!m->fresnel && !vzero(m->reflect)) {
 		fputs(" reflection { rgb ", f);
 		pov_vec(f, m->reflect);
@@ -167,18 +214,20 @@ bool pov_material_interior(const struct material *m, double *ior)
 }
 
 /* The material's textures, bottom first: one layer or the four of the general recipe. */
-static void write_textures(FILE *f, const struct material *m)
+static void write_textures(FILE *f, const struct pov_material_context *cx, const struct material *m)
 {
 	if (single_layer(m))
-		write_single_layer(f, m);
+		write_single_layer(f, cx, m);
 	else
-		write_layers(f, m);
+		write_layers(f, cx, m);
 }
 
-void pov_write_material(FILE *f, size_t index, const struct material *m, bool shared)
+void pov_write_material(FILE *f, const struct scene *sc, size_t index, bool shared, const char *pov_dir)
 {
+	const struct pov_material_context cx = { sc, pov_dir };
+	const struct material *m = &sc->materials[index];
 	fprintf(f, "// scn material %zu: diffuse ", index);
-	if (m->checker) {
+	if (m->pigment == MATERIAL_CHECKER) {
 		fputs("checker(", f);
 		pov_vec(f, m->diffuse);
 		fputs(", ", f);
@@ -189,6 +238,10 @@ void pov_write_material(FILE *f, size_t index, const struct material *m, bool sh
 	} else {
 		pov_vec(f, m->diffuse);
 	}
+	if (m->pigment == MATERIAL_PATTERN || m->pigment == MATERIAL_IMAGE)
+		fprintf(f, " (a%s)", m->pigment == MATERIAL_PATTERN ? " pattern" : "n image map");
+	if (m->bump >= 0)
+		fputs(" with bumps", f);
 	fputs(" specular ", f);
 	pov_vec(f, m->specular);
 	fputs(" shininess ", f);
@@ -207,7 +260,10 @@ void pov_write_material(FILE *f, size_t index, const struct material *m, bool sh
 	bool single = single_layer(m);
 	fprintf(f, "#declare scn_material_%zu = material {%s\n", index,
 	        single ? "" : "  // general recipe: layers S, F, D, E (the last is on top)");
-	write_textures(f, m);
+	if (image_once(&cx, m) && (!single || m->transmit.x != 0))
+		fputs("  // not exact: outside its `once` image, POV-Ray's transmitting or layered twin shows the"
+		      " layers below rather than the plain diffuse colour\n", f);
+	write_textures(f, &cx, m);
 	double ior;
 	bool interior = pov_material_interior(m, &ior);
 	if (interior) {
@@ -219,20 +275,21 @@ void pov_write_material(FILE *f, size_t index, const struct material *m, bool sh
 	if (shared && interior) {
 		fprintf(f, "#declare scn_material_%zu_shared = material {  // without its interior: its solid's CSG"
 		           " holds one for all its members\n", index);
-		write_textures(f, m);
+		write_textures(f, &cx, m);
 		fputs("}\n", f);
 	}
 }
 
-/* A checker in object space gets the object's transform: POV-Ray applies the inverse of
- * a transform to the point, and `inverse` makes that inverse exactly scn's to_object map. */
+/* A textured material in object space gets the object's transform: POV-Ray applies the
+ * inverse of a transform to the point, and `inverse` makes that inverse exactly scn's
+ * to_object map. */
 void pov_material_ref(FILE *f, const struct scene *sc, uint32_t surface, bool shared)
 {
 	const struct surface *s = &sc->geo.surfaces[surface];
 	double ior;
 	fprintf(f, "material { scn_material_%u%s", (unsigned)s->material,
 	        shared && pov_material_interior(&sc->materials[s->material], &ior) ? "_shared" : "");
-	if (s->to_object >= 0 && sc->materials[s->material].checker) {
+	if (s->to_object >= 0 && material_textured(&sc->materials[s->material])) {
 		fputs(" transform { ", f);
 		pov_matrix(f, &sc->affines[s->to_object]);
 		fputs(" inverse }", f);

@@ -10,6 +10,7 @@ void geometry_free(struct geometry *g)
 	free(g->planes);
 	free(g->vertices);
 	free(g->normals);
+	free(g->uvs);
 	free(g->triangles);
 	free(g->surfaces);
 	free(g->parts);

@@ -13,11 +13,15 @@
 #include "sphere.h"
 #include "triangle.h"
 
-/* What a primitive is made of: a material, and for a checker the map from world space
- * back to the object's own space, where the checker is defined. */
+/* What a primitive is made of: a material, and for a textured one (material_textured) the
+ * map from world space back to the object's own space, where its patterns are defined. */
 struct surface {
 	uint32_t material;             /* into scene.materials */
 	int32_t to_object;             /* into scene.affines; -1: the identity */
+};
+
+struct uv {
+	double u, v;
 };
 
 struct geometry {
@@ -29,6 +33,9 @@ struct geometry {
 	size_t nvertices;
 	struct vec3 *normals;
 	size_t nnormals;
+	struct uv *uvs;                /* texture coordinates, one per vertex (NULL when no mesh
+	                                * has any; zero for the vertices of those that have none) */
+	size_t nuvs;
 	struct triangle *triangles;
 	size_t ntriangles;
 	struct surface *surfaces;

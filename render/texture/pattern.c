@@ -196,16 +196,16 @@ struct vec3 pattern_bump(const struct pattern *pt, struct vec3 q)
  * part L, whose direction is that of L's cofactor matrix times the sign of det L, and
  * come back by L's transpose. So a uniform scale of the pattern leaves the depth of its
  * bumps alone. */
-struct vec3 pattern_bump_normal(const struct pattern *pt, struct vec3 q, struct vec3 n)
+struct vec3 pattern_bump_normal(const struct pattern *pt, const struct affine *to, struct vec3 q, struct vec3 n)
 {
-	const double (*m)[4] = pt->to_pattern.m;
+	const double (*m)[4] = to->m;
 	struct vec3 r0 = v3(m[0][0], m[0][1], m[0][2]), r1 = v3(m[1][0], m[1][1], m[1][2]),
 	            r2 = v3(m[2][0], m[2][1], m[2][2]);
 	/* the cofactor matrix's rows are the cross products of L's rows */
 	struct vec3 c0 = vcross(r1, r2), c1 = vcross(r2, r0), c2 = vcross(r0, r1);
 	double sign = vdot(r0, c0) < 0 ? -1 : 1;
 	struct vec3 np = vnorm(vscale(v3(vdot(c0, n), vdot(c1, n), vdot(c2, n)), sign));
-	struct vec3 w = affine_normal(&pt->to_pattern, vadd(np, pattern_bump(pt, q)));
+	struct vec3 w = affine_normal(to, vadd(np, pattern_bump(pt, q)));
 	double len = vlen(w);
 	return len > 0 ? vscale(w, 1 / len) : n;  /* a bump that cancels the normal: none */
 }

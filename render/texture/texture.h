@@ -69,11 +69,12 @@ struct vec3 pattern_map(const struct pattern *pt, double v);
  * world to pattern space) and added to the unit shading normal before renormalising. */
 struct vec3 pattern_bump(const struct pattern *pt, struct vec3 q);
 /* The unit shading normal that POV-Ray's rule gives n (a unit normal in the space that
- * to_pattern maps from) under pt's bumps at q (pattern space): n taken into the pattern's
- * space and normalised, pattern_bump added, the sum brought back and normalised. Unlike
- * adding pattern_bump mapped back to n, it leaves the bumps' depth alone when the pattern
- * is scaled (`normal { bumps 0.6  scale 0.1 }` is as deep as without the scale). */
-struct vec3 pattern_bump_normal(const struct pattern *pt, struct vec3 q, struct vec3 n);
+ * `to` maps into the pattern's: pt->to_pattern, or it after the object's own map) under
+ * pt's bumps at q (pattern space): n taken into the pattern's space and normalised,
+ * pattern_bump added, the sum brought back and normalised. Unlike adding pattern_bump
+ * mapped back to n, it leaves the bumps' depth alone when the pattern or the object is
+ * scaled (`normal { bumps 0.6  scale 0.1 }` is as deep as without the scale). */
+struct vec3 pattern_bump_normal(const struct pattern *pt, const struct affine *to, struct vec3 q, struct vec3 n);
 
 /* Image maps: map_type 0, 1, 2 and uv_mapping. */
 enum texture_map { TEXTURE_MAP_PLANAR, TEXTURE_MAP_SPHERICAL, TEXTURE_MAP_CYLINDRICAL, TEXTURE_MAP_UV };

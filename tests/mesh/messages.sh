@@ -3,6 +3,9 @@
 # inf, an OBJ's inf, nan and 1e39), triangles without area a warning that says why
 # (corners that coincide, as assimp makes of an OFF face line without its indices, or on
 # one line), and a PLY header line that scn's checks do not know loads as assimp reads it.
+# A file's texture that cannot be read is an error naming the mesh file and the texture;
+# one without texture coordinates falls back to its colour with a warning; `map uv` on a
+# mesh file without texture coordinates is an error.
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
@@ -48,4 +51,25 @@ scene 'mesh { "unknown_lines.ply" }'
 expect_status 0 "$SCN" check scene.scn
 only_line "$work/err" ""
 expect_status 0 "$SCN" render scene.scn -W 8 -H 6 -q -o out.png
+
+# a file's texture: missing, not an image scn reads, without texture coordinates
+mkdir textures
+printf 'mtllib tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl t\nf 1/1 2/2 3/3\n' >tex.obj
+printf 'newmtl t\nKd 1 0 0\nmap_Kd textures/missing.png\n' >tex.mtl
+scene 'mesh { "tex.obj" }'
+expect_first 1 "scene.scn:3:8: error: cannot read texture 'textures/missing.png' of mesh file 'tex.obj': cannot read 'textures/missing.png': No such file or directory"
+rm -f out.png
+expect_status 1 "$SCN" render scene.scn -W 8 -H 6 -q -o out.png
+[ ! -e out.png ] || fail "a render with a missing texture wrote out.png"
+printf 'not an image\n' >textures/missing.png
+expect_first 1 "scene.scn:3:8: error: cannot read texture 'textures/missing.png' of mesh file 'tex.obj': cannot read 'textures/missing.png': not a PNG, OpenEXR or binary PPM (P6) image"
+# a material of the scene's: the file's own, and its texture, are not asked for
+scene 'mesh { "tex.obj"  material { diffuse 0.5 } }'
+expect_status 0 "$SCN" check scene.scn
+printf 'mtllib tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n' >no_uv.obj
+scene 'mesh { "no_uv.obj" }'
+expect_first 0 "scene.scn:3:8: warning: mesh file 'no_uv.obj' gives texture 'textures/missing.png' but no texture coordinates: its diffuse colour is used instead"
+cp "$SCN_SRCDIR/examples/sky.png" . || exit 99
+scene 'mesh { "no_uv.obj"  material { diffuse image { "sky.png" map uv } } }'
+expect_first 1 "scene.scn:3:1: error: 'map uv' needs texture coordinates, and mesh file 'no_uv.obj' has none"
 finish
