@@ -216,6 +216,9 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 		st->reflection += workers[i].stats.reflection;
 		st->refraction += workers[i].stats.refraction;
 		st->nonfinite += workers[i].stats.nonfinite;
+		st->patterns += workers[i].stats.patterns;
+		st->images += workers[i].stats.images;
+		st->bumps += workers[i].stats.bumps;
 	}
 	/* which worker rendered which tile varies from run to run, so this sum may differ
 	 * in its last bits: it is reported, never written into the image */

@@ -135,14 +135,23 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 	 * side decided before the bump; inside or outside from the geometric normal */
 	bool entering = vdot(r->d, sp.ng) < 0;
 	bool back = vdot(sp.ns, r->d) > 0;
-	struct vec3 ns = m->bump >= 0 ? shade_bump(sc, srf, m, sp.p, sp.ns) : sp.ns;
+	struct vec3 ns = sp.ns;
+	if (m->bump >= 0) {
+		st->bumps++;
+		ns = shade_bump(sc, srf, m, sp.p, sp.ns);
+	}
 	struct vec3 n = back ? vneg(ns) : ns;
 	struct vec3 v = vneg(r->d);
 	struct vec3 color = m->emit;
 	if (sc->nlights) {
 		struct surface_point shadow_from = sp;
 		shape_shadow_point(&sc->geo, &h, back ? -1 : 1, &shadow_from);
-		struct vec3 kd = m->pigment == MATERIAL_COLOR ? m->diffuse : shade_diffuse(sc, srf, m, &h, &sp);
+		struct vec3 kd = m->diffuse;
+		if (m->pigment != MATERIAL_COLOR) {
+			st->patterns += m->pigment == MATERIAL_PATTERN;
+			st->images += m->pigment == MATERIAL_IMAGE;
+			kd = shade_diffuse(sc, srf, m, &h, &sp);
+		}
 		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, st));
 	}
 	if (depth >= sc->max_depth)

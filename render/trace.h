@@ -10,6 +10,7 @@
 /* Rays by kind and values that were not finite: counted per thread, summed at the end. */
 struct ray_stats {
 	uint64_t camera, shadow, reflection, refraction;
+	uint64_t patterns, images, bumps; /* lookups of colour patterns, image maps, bump patterns */
 	uint64_t nonfinite;            /* radiance samples that were NaN or infinite (must stay 0) */
 	uint64_t probe_pixels;         /* pixels rendered twice to estimate the error (render.c) */
 	uint64_t probe_camera;         /* the camera rays of their second replica, not in camera */

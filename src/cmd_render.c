@@ -220,6 +220,15 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 		struct bvh_shape shape = bvh_shape(sc->accel.bvh);
 		fprintf(stderr, "bvh %zu nodes, depth %d, %zu triangle packets\n", shape.nodes, shape.depth, shape.packets);
 	}
+	if (sc->npatterns || sc->nimage_maps) {
+		/* the image files' texels, each file once */
+		uint64_t bytes = 0;
+		for (size_t i = 0; i < sc->nimages; i++)
+			bytes += image_bytes(sc->images[i]->width, sc->images[i]->height);
+		fprintf(stderr, "textures: %zu patterns, %zu image maps of %zu image files (%.1f MB); lookups: pattern %llu"
+		        "  image %llu  bump %llu\n", sc->npatterns, sc->nimage_maps, sc->nimages, bytes / 1e6,
+		        (unsigned long long)st->patterns, (unsigned long long)st->images, (unsigned long long)st->bumps);
+	}
 	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
 	        (unsigned long long)st->camera, (unsigned long long)st->shadow, (unsigned long long)st->reflection,
 	        (unsigned long long)st->refraction,

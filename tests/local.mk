@@ -14,6 +14,7 @@ EXTRA_DIST += tests/run-test tests/lib.sh tests/lsan.supp
 include tests/errors/local.mk
 include tests/parse/local.mk
 include tests/cli/local.mk
+include tests/golden/local.mk
 include tests/hostile/local.mk
 EXTRA_DIST += tests/unit/check.h tests/unit/random.h
 include tests/unit/local.mk

@@ -95,6 +95,10 @@ double pattern_value(const struct pattern *pt, struct vec3 q)
 		v = fmod(v * pt->frequency + pt->phase, 1.00001);
 	if (v < 0)
 		v -= floor(v);
+	/* a value past double's range (an absurd frequency, phase or turbulence: inf, or NaN
+	 * from inf - inf) has no place in the map: its start, rather than a NaN in the image */
+	if (!isfinite(v))
+		v = 0;
 	if (pt->kind == TEXTURE_WOOD || pt->kind == TEXTURE_MARBLE)
 		v = triangle_wave(v);
 	return v;

@@ -4,12 +4,15 @@
 # total internal reflection, the shadow terminator of a smooth low-poly mesh, the stiff
 # cases of section 9's shapes (thin tori face-on and edge-on, far tori, a flattened
 # ellipsoid, a cylinder seen along its axis, flush cutters and coinciding CSG members),
-# and non-finite or degenerate input. Each NAME.scn has the property NAME.expect states (an
+# textures at their extremes (overflowing patterns, scales of 1e-300 and 1e300, a textured
+# sphere at 1e15), and non-finite or degenerate input. Each NAME.scn has the property NAME.expect states (an
 # analytic mask, or equality with a well-conditioned twin), or is refused as NAME.err
 # says; tests/extreme/run-extreme checks it, and every render must count 0 non-finite
 # radiance values. tests/extreme/compare-pov checks the same properties on POV-Ray's
 # renders (not part of make check).
 EXTREME_TESTS = \
+	tests/extreme/texture_overflow.scn \
+	tests/extreme/texture_extremes.scn \
 	tests/extreme/axis_rays_neg.scn \
 	tests/extreme/axis_rays_pos.scn \
 	tests/extreme/axis_rays_x.scn \
@@ -136,7 +139,9 @@ EXTREME_EXPECT = \
 	tests/extreme/torus_face_1e-3.expect \
 	tests/extreme/torus_face_1e-4.expect \
 	tests/extreme/torus_far_1e6.expect \
-	tests/extreme/torus_far_1e9.expect
+	tests/extreme/torus_far_1e9.expect \
+	tests/extreme/texture_overflow.expect \
+	tests/extreme/texture_extremes.expect
 EXTREME_REFUSED = tests/extreme/huge_mesh.err tests/extreme/huge_sphere.err tests/extreme/literal_1e400.err \
 	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err
 EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
@@ -149,4 +154,5 @@ EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
 	tests/extreme/no_light.scn \
 	tests/extreme/subnormal_dirs_twin.scn \
 	tests/extreme/torus_twin.scn \
-	tests/extreme/world_twin.scn
+	tests/extreme/world_twin.scn \
+	tests/extreme/texture_overflow_twin.scn

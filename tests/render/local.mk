@@ -12,6 +12,7 @@ RENDER_TESTS += tests/render/mirror.scn tests/render/mirror_sky.scn tests/render
 RENDER_TESTS += tests/render/mirrors_default.scn tests/render/mirrors_depth256.scn tests/render/mirrors_tiny.scn tests/render/refract_tiny.scn tests/render/acne_far.scn tests/render/acne_sphere.scn
 RENDER_TESTS += tests/render/refract_slab.scn tests/render/refract_slab_depth2.scn tests/render/refract_sphere.scn tests/render/refract_ior1.scn tests/render/refract_offaxis.scn tests/render/refract_enter.scn tests/render/refract_exit.scn tests/render/tir.scn
 RENDER_TESTS += tests/render/fresnel_normal.scn tests/render/fresnel_60.scn tests/render/fresnel_exit.scn tests/render/fresnel_opaque.scn
+RENDER_TESTS += tests/render/pattern_gradient.scn tests/render/pattern_radial.scn tests/render/bump_mirror.scn
 RENDER_TESTS += tests/render/checker.scn tests/render/checker_translate.scn tests/render/checker_scale.scn tests/render/checker_sphere.scn tests/render/checker_bias.scn tests/render/checker_below.scn
 RENDER_TESTS += tests/render/sky_up.scn tests/render/sky_horizon.scn tests/render/sky_mid.scn tests/render/sky_constant.scn tests/render/skybox_png.scn tests/render/skybox_rotate.scn tests/render/skybox_srgb.scn tests/render/skybox_exr.scn
 RENDER_TESTS += tests/render/camera_fov.scn tests/render/default_camera.scn
