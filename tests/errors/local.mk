@@ -1,5 +1,7 @@
 # tests/errors/local.mk: the tests of this folder (see tests/run-test).
 TESTS += tests/errors/unknown_material.scn
+TESTS += tests/errors/surface_image_malformed.scn
+EXTRA_DIST += tests/errors/surface_image_malformed.scn tests/errors/surface_image_malformed.err
 EXTRA_DIST += tests/errors/unknown_material.scn tests/errors/unknown_material.err
 # include errors; the files they include are in include_inc/ and include_chain/
 TESTS += tests/errors/include_missing.scn

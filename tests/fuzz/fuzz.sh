@@ -86,8 +86,9 @@ seed() {
 
 # The front end's dictionary: its keywords and built-in functions, read from their
 # tables so that it never falls behind them, its punctuation, and the fragments that
-# nest objects in a CSG (a member's block inside the CSG's, a for loop of members) and
-# that define and call functions and macros, branch and index.
+# nest objects in a CSG (a member's block inside the CSG's, a for loop of members), that
+# define and call functions and macros, branch and index, and the surfaces' blocks and
+# names (which are not keywords).
 scene_dict() {
 	sed -n '/^static const char \*const names/,/^};/p' "$top_srcdir/lang/keywords.c" |
 		grep -o '"[a-z_]*"'
@@ -95,7 +96,10 @@ scene_dict() {
 	for t in '+' '-' '*' '/' '=' '{' '}' '<' '>' '(' ')' ',' '..' '.x' '.y' '.z' '//' '/*' '*/' '"' '1e308' '-0' \
 		'0.5' '1e-9' ' { sphere { 0, 1 } ' ' { box { 0, 1 } } ' 'for i in 0 .. 3 { ' '<0, 1, 0>' \
 		'==' '!=' '<=' '>=' '?' ':' '[' ']' '[]' ' ? 1 : 0' 'def f(x) = x * 2 ' 'def m(p) { sphere { p, 1 } } ' \
-		'm(<0, 0, 0>) ' 'if 1 < 2 { ' ' } else { ' ' } else if ' 'for x in [1, 2, 3] { ' '"a" + str(1)' 'xs[0]'; do
+		'm(<0, 0, 0>) ' 'if 1 < 2 { ' ' } else { ' ' } else if ' 'for x in [1, 2, 3] { ' '"a" + str(1)' 'xs[0]' \
+		'diffuse pattern { ' 'diffuse image { "' 'normal { ' 'colors [[0, <1, 0, 0>], [1, 1]]' 'gradient <1, 0, 0>' \
+		'marble' 'wood' 'bozo' 'granite' 'agate' 'spotted' 'leopard' 'onion' 'radial' 'bumps' 'dents' 'ripples' \
+		'waves' 'wrinkles' 'map uv' 'map spherical' 'map cylindrical' 'interpolate bilinear' 'uvs { '; do
 		printf '"%s"\n' "$(printf %s "$t" | sed 's/[\\"]/\\&/g')"
 	done
 }
