@@ -11,9 +11,10 @@ render_libscnrender_a_SOURCES = \
 	%D%/scene.c %D%/scene.h \
 	%D%/shade.c %D%/shade.h \
 	%D%/trace.c %D%/trace.h
-# lower.c and lower_texture.c, a library of their own: the only files whose include path
+# lower*.c, a library of their own: the only files whose include path
 # holds lang/
 LOWER_INCLUDES = $(RENDER_INCLUDES) $(MESH_INCLUDES) $(LANG_INCLUDES)
 noinst_LIBRARIES += render/libscnlower.a
 render_libscnlower_a_CPPFLAGS = $(BASE_CPPFLAGS) $(LOWER_INCLUDES)
-render_libscnlower_a_SOURCES = %D%/lower.c %D%/lower.h %D%/lower_texture.c %D%/lower_texture.h
+render_libscnlower_a_SOURCES = %D%/lower.c %D%/lower.h %D%/lower_internal.h %D%/lower_add.c %D%/lower_mesh.c \
+	%D%/lower_texture.c %D%/lower_texture.h

@@ -1,6 +1,7 @@
 /* lower.c: turns the evaluated scene_desc into the renderer's scene: world-space
  * geometry with transforms baked in, only the materials objects use, mesh files and sky
- * images loaded (each once). */
+ * images loaded (each once). The objects, solids, lights and sky are here; meshes in
+ * lower_mesh.c, what every object adds in lower_add.c, textures in lower_texture.c. */
 #include "lower.h"
 
 #include <errno.h>
@@ -11,226 +12,16 @@
 #include "camera.h"
 #include "clock.h"
 #include "image_file.h"
-#include "lower_texture.h"
+#include "lower_internal.h"
 #include "memory.h"
 #include "mesh_import.h"
 #include "part_make.h"
 #include "shape.h"
 #include "xalloc.h"
 
-struct mesh_cache_entry {
-	const char *path;
-	struct mesh_data data;
-	bool ok;
-	int32_t source[2];             /* its scene mesh number, flat and smooth; -1: none yet */
-	int32_t *materials[2];         /* the scene material of each of the file's materials, its
-	                                * textures looked up nearest and bilinear; -1: none yet */
-};
-
-struct lowering {
-	struct diag *diag;
-	const struct scene_desc *desc;
-	struct scene *sc;
-	size_t cap_surfaces, cap_uvs, cap_affines, cap_spheres, cap_planes, cap_vertices, cap_normals, cap_triangles;
-	size_t cap_materials, cap_mesh_uses, cap_parts, cap_members, cap_solids, cap_unbounded, cap_part_triangles, cap_csg_boxes;
-	int *material_map;             /* desc material -> scene material, or -1 */
-	int default_material;          /* the scene material for objects without one, or -1 */
-	struct mesh_cache_entry *mesh_cache;
-	size_t nmesh_cache, cap_mesh_cache;
-	double mesh_seconds;
-	bool too_big;                  /* a mesh file or the sky image needs more memory than there is */
-	struct texture_lowering tex;
-};
-
-/* The scene description's transform as the renderer's affine map (the same layout). */
-static struct affine affine_of(const struct xform *x)
-{
-	struct affine a;
-	memcpy(a.m, x->m, sizeof a.m);
-	return a;
-}
-
-static struct vec3 xform_point(const struct xform *x, struct vec3 p)
-{
-	struct affine a = affine_of(x);
-	return affine_point(&a, p);
-}
-
-static struct affine xform_inverse(const struct xform *x)
-{
-	struct affine a = affine_of(x);
-	return affine_inverse(&a);
-}
-
-/* Whether x mirrors space: a triangle's corners then go the other way round, and are
- * swapped so that (B-A) x (C-A) still points to the side that was the outside (a
- * mirrored closed mesh stays solid). */
-static bool xform_mirrors(const struct xform *x)
-{
-	struct affine a = affine_of(x);
-	return affine_mirrors(&a);
-}
-
-static struct material lower_material(struct lowering *lw, const struct material_desc *m)
-{
-	/* ORDER: enum pigment_kind and enum material_pigment alike */
-	static const uint8_t pigments[] = {
-		[PIGMENT_COLOR] = MATERIAL_COLOR, [PIGMENT_CHECKER] = MATERIAL_CHECKER,
-		[PIGMENT_PATTERN] = MATERIAL_PATTERN, [PIGMENT_IMAGE] = MATERIAL_IMAGE,
-	};
-	struct material out = {
-		.diffuse = v3a(m->diffuse), .diffuse2 = v3a(m->diffuse2), .checker_size = m->checker_size,
-		.pigment = pigments[m->pigment], .texture = -1, .bump = -1, .fresnel = m->fresnel,
-		.specular = v3a(m->specular), .reflect = v3a(m->reflect), .transmit = v3a(m->transmit),
-		.emit = v3a(m->emit), .shininess = m->shininess, .ior = m->ior,
-	};
-	if (m->pigment == PIGMENT_PATTERN)
-		out.texture = lower_texture_pattern(&lw->tex, m->pattern);
-	if (m->pigment == PIGMENT_IMAGE) {
-		out.texture = lower_texture_image(&lw->tex, m->pattern);
-		if (out.texture < 0) /* reported; the render does not happen */
-			out.pigment = MATERIAL_COLOR;
-	}
-	if (m->normal >= 0)
-		out.bump = lower_texture_pattern(&lw->tex, m->normal);
-	return out;
-}
-
-/* The scene material of an object: used materials only, in first-use order. */
-static uint32_t material_of(struct lowering *lw, int desc_index)
-{
-	struct scene *sc = lw->sc;
-	int *slot = desc_index >= 0 ? &lw->material_map[desc_index] : &lw->default_material;
-	if (*slot < 0) {
-		/* LANGUAGE.md's default material: diffuse 0.8 grey, nothing else */
-		static const struct material default_material = { .texture = -1, .bump = -1,
-			.diffuse = { 0.8, 0.8, 0.8 }, .shininess = 50, .ior = 1,
-		};
-		/* doubling: 100000 inline materials must not be copied 100000 times */
-		xgrow((void **)&sc->materials, &lw->cap_materials, sc->nmaterials + 1, sizeof *sc->materials);
-		sc->materials[sc->nmaterials] = desc_index >= 0 ? lower_material(lw, &lw->desc->materials[desc_index])
-		                                                : default_material;
-		*slot = (int)sc->nmaterials++;
-	}
-	return (uint32_t)*slot;
-}
-
-/* A surface of object o made of scene material mat. */
-static uint32_t add_surface_of(struct lowering *lw, const struct object_desc *o, uint32_t mat)
-{
-	struct scene *sc = lw->sc;
-	int32_t to_object = -1;
-	if (material_textured(&sc->materials[mat]) && o->pattern_xform >= 0) {
-		xgrow((void **)&sc->affines, &lw->cap_affines, sc->naffines + 1, sizeof *sc->affines);
-		sc->affines[sc->naffines] = xform_inverse(&lw->desc->xforms[o->pattern_xform]);
-		to_object = (int32_t)sc->naffines++;
-	}
-	xgrow((void **)&sc->geo.surfaces, &lw->cap_surfaces, sc->geo.nsurfaces + 1, sizeof *sc->geo.surfaces);
-	sc->geo.surfaces[sc->geo.nsurfaces] = (struct surface){ mat, to_object };
-	return (uint32_t)sc->geo.nsurfaces++;
-}
-
-/* A surface of object o made of its material. */
-static uint32_t add_surface(struct lowering *lw, const struct object_desc *o)
-{
-	return add_surface_of(lw, o, material_of(lw, o->material));
-}
-
-static uint32_t add_vertex(struct lowering *lw, struct vec3 v)
-{
-	struct scene *sc = lw->sc;
-	xgrow((void **)&sc->geo.vertices, &lw->cap_vertices, sc->geo.nvertices + 1, sizeof *sc->geo.vertices);
-	sc->geo.vertices[sc->geo.nvertices] = v;
-	return (uint32_t)sc->geo.nvertices++;
-}
-
-/* Geometry beyond this distance from the origin is refused: the intersection tests
- * square coordinates (a sphere's r^2 and |o - c|^2) and multiply three (a triangle's
- * scaled t), which overflow a double from about 1e102, and an overflow would be a
- * silently missing object. */
-#define MAX_EXTENT 1e100
-/* ... and a sphere below this radius, whose r^2 would underflow, is not drawn (with a
- * warning): it is valid, only too small to compute with, and too small to see. */
+/* A sphere below this radius, whose r^2 would underflow, is not drawn (with a warning): it
+ * is valid, only too small to compute with, and too small to see. */
 #define MIN_RADIUS 1e-100
-
-/* Reports what at `at` when it reaches extent from the origin (after its transforms);
- * returns whether it stays within the limit. */
-static bool check_extent(struct lowering *lw, struct span at, const char *what, double extent)
-{
-	if (extent <= MAX_EXTENT)
-		return true;
-	diag_error(lw->diag, at, "%s reaches %g from the origin, beyond the limit of 1e100 (its arithmetic would overflow)",
-	           what, extent);
-	return false;
-}
-
-static double extent_of(struct vec3 p)
-{
-	return vmaxc(vabs(p));
-}
-
-/* Adds a triangle unless it has no area (NUMERICS.md section 5), to the scene's or, with
- * part, to the mesh parts' triangles; returns whether it did. */
-static bool add_triangle(struct lowering *lw, const uint32_t v[3], const uint32_t n[3], uint32_t surface, bool part)
-{
-	struct scene *sc = lw->sc;
-	struct vec3 a = sc->geo.vertices[v[0]], b = sc->geo.vertices[v[1]], c = sc->geo.vertices[v[2]];
-	struct vec3 area = vcross(vsub(b, a), vsub(c, a));
-	if (vzero(area) || !isfinite(area.x) || !isfinite(area.y) || !isfinite(area.z))
-		return false;
-	struct triangle **list = part ? &sc->geo.part_triangles : &sc->geo.triangles;
-	size_t *n_list = part ? &sc->geo.npart_triangles : &sc->geo.ntriangles;
-	xgrow((void **)list, part ? &lw->cap_part_triangles : &lw->cap_triangles, *n_list + 1, sizeof **list);
-	struct triangle *t = &(*list)[(*n_list)++];
-	memcpy(t->v, v, sizeof t->v);
-	memcpy(t->n, n, sizeof t->n);
-	t->surface = surface;
-	return true;
-}
-
-/* The cache entry of a file already read, or NULL. */
-static struct mesh_cache_entry *mesh_cached(struct lowering *lw, const char *path)
-{
-	for (size_t i = 0; i < lw->nmesh_cache; i++)
-		if (strcmp(lw->mesh_cache[i].path, path) == 0)
-			return &lw->mesh_cache[i];
-	return NULL;
-}
-
-/* The mesh data of a file (read once however many objects use it), or NULL after an error. */
-static const struct mesh_data *mesh_file(struct lowering *lw, const struct mesh_desc *m)
-{
-	struct mesh_cache_entry *entry = mesh_cached(lw, m->path);
-	if (entry)
-		return entry->ok ? &entry->data : NULL;
-	xgrow((void **)&lw->mesh_cache, &lw->cap_mesh_cache, lw->nmesh_cache + 1, sizeof *lw->mesh_cache);
-	entry = &lw->mesh_cache[lw->nmesh_cache++];
-	memset(entry, 0, sizeof *entry);
-	entry->path = m->path;
-	entry->source[0] = entry->source[1] = -1;
-	char err[512];
-	double t0 = clock_now();
-	int rc = mesh_import(m->path, &entry->data, err, sizeof err);
-	entry->ok = rc == 0;
-	lw->too_big = lw->too_big || rc == ENOMEM;
-	lw->mesh_seconds += clock_now() - t0;
-	if (!entry->ok)
-		diag_error(lw->diag, m->file_span, "%s", err);
-	return entry->ok ? &entry->data : NULL;
-}
-
-/* The data of mesh object o: its file's (read once) or its inline arrays in *inline_data;
- * NULL after an error. */
-static const struct mesh_data *mesh_data_of(struct lowering *lw, const struct object_desc *o,
-                                            struct mesh_data *inline_data)
-{
-	const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
-	*inline_data = (struct mesh_data){
-		.vertices = m->vertices, .nvertices = m->nvertices, .normals = m->normals,
-		.nnormals = m->nnormals, .faces = m->faces, .nfaces = m->nfaces, .uvs = m->uvs,
-	};
-	return m->file ? mesh_file(lw, m) : inline_data;
-}
 
 /* Whether the render fits the machine's memory: other_bytes, the objects, and each mesh
  * object's triangles and vertices (every file read here, once), with the BVH over them,
@@ -248,7 +39,7 @@ static bool scene_fits(struct lowering *lw, int64_t other_bytes)
 	for (size_t i = 0; i < desc->nobjects; i++) {
 		const struct object_desc *o = &desc->objects[i];
 		struct mesh_data inline_data;
-		const struct mesh_data *data = o->kind == OBJ_MESH ? mesh_data_of(lw, o, &inline_data) : NULL;
+		const struct mesh_data *data = o->kind == OBJ_MESH ? lower_mesh_data(lw, o, &inline_data) : NULL;
 		if (!data)
 			continue;
 		triangles += data->nfaces;
@@ -271,250 +62,6 @@ static bool scene_fits(struct lowering *lw, int64_t other_bytes)
 		diag_plain(lw->diag, DIAG_ERROR, "the render needs %s for %zu objects, their BVH and the image; %s %s",
 		           need, desc->nobjects, limit_is, have);
 	return false;
-}
-
-/* Records that mesh file object o made surface, placed by x (inverse inv). */
-static void add_mesh_use(struct lowering *lw, const struct object_desc *o, uint32_t surface, const struct xform *x,
-                         const struct affine *inv, bool mirrored)
-{
-	struct scene *sc = lw->sc;
-	int32_t *source = &mesh_cached(lw, lw->desc->meshes[o->u.mesh.index].path)->source[o->smooth];
-	if (*source < 0)
-		*source = (int32_t)sc->nmesh_sources++;
-	xgrow((void **)&sc->mesh_uses, &lw->cap_mesh_uses, sc->nmesh_uses + 1, sizeof *sc->mesh_uses);
-	struct mesh_use *u = &sc->mesh_uses[sc->nmesh_uses++];
-	*u = (struct mesh_use){ .surface = surface, .mesh = (uint32_t)*source, .mirrored = mirrored, .to_object = *inv };
-	memcpy(u->to_world.m, x->m, sizeof u->to_world.m);
-}
-
-/* Whether two of a triangle's corners are one point; a triangle without area whose
- * corners are apart has them on one line. */
-static bool corners_coincide(struct vec3 a, struct vec3 b, struct vec3 c)
-{
-	return vzero(vsub(a, b)) || vzero(vsub(b, c)) || vzero(vsub(c, a));
-}
-
-/* Warns at `at` that dropped of a mesh's nfaces triangles have no area: coinciding of
- * them because two corners are one point (a file's face that repeats a vertex, as assimp
- * makes of an OFF face line without its indices), the others because their corners are on
- * one line. When none is left, it says that the mesh is not drawn, since the image then
- * simply lacks it. */
-static void warn_no_area(struct lowering *lw, struct span at, size_t dropped, size_t coinciding, size_t nfaces)
-{
-	char why[96] = "", line[64] = "";
-	size_t apart = dropped - coinciding;
-	if (apart)
-		snprintf(line, sizeof line, "%zu %s corners on one line", apart, apart == 1 ? "has its" : "have their");
-	if (coinciding)
-		snprintf(why, sizeof why, "%zu %s coinciding corners%s%s", coinciding, coinciding == 1 ? "has" : "have",
-		         apart ? ", " : "", line);
-	else
-		snprintf(why, sizeof why, "%s", line);
-	if (dropped == nfaces)
-		diag_warning(lw->diag, at, "this mesh is not drawn: none of its %zu triangles has an area (%s)", nfaces, why);
-	else
-		diag_warning(lw->diag, at, "%zu of this mesh's %zu triangles have no area and are not drawn (%s)", dropped,
-		             nfaces, why);
-}
-
-/* Mesh object o, as triangles of the scene, or with part (a solid's part, whose inside
- * its inside_vector decides) as the triangles of that mesh part, whose range it sets;
- * false when it is not drawn. */
-/* The scene material of a mesh file's material mm (LANGUAGE.md 11): its colours, its
- * opacity as transmit, and its diffuse texture, if any, looked up by the file's UVs; the
- * texture replaces the diffuse colour, as in POV-Ray's twin (an image map cannot be
- * multiplied by a colour there). */
-static struct material file_material(struct lowering *lw, const struct mesh_desc *m, const struct mesh_data *data,
-                                     const struct mesh_material *mm, struct span at)
-{
-	struct material out = {
-		.diffuse = v3a(mm->diffuse), .pigment = MATERIAL_COLOR, .texture = -1, .bump = -1,
-		.specular = v3a(mm->specular), .shininess = mm->exponent, .transmit = v3s(1 - mm->opacity),
-		.ior = mm->ior, .emit = v3a(mm->emission),
-	};
-	if (!mm->texture)
-		return out;
-	if (!data->uvs) {
-		diag_warning(lw->diag, at, "mesh file '%s' gives texture '%s' but no texture coordinates: its diffuse "
-		             "colour is used instead", m->file, mm->texture);
-		return out;
-	}
-	if (!mm->texture_path && !mm->texture_data) {
-		diag_error(lw->diag, at, "cannot read texture '%s' of mesh file '%s': it is embedded as %s, and only "
-		           "PNG can be", mm->texture, m->file, *mm->texture_format ? mm->texture_format : "raw texels");
-		return out;
-	}
-	/* an embedded texture is known by its file and its name there */
-	char *key = NULL;
-	if (mm->texture_data) {
-		key = xmalloc(strlen(m->path) + strlen(mm->texture) + 2);
-		sprintf(key, "%s#%s", m->path, mm->texture);
-	}
-	int32_t im = lower_texture_mesh_image(&lw->tex, key ? key : mm->texture_path, mm->texture_data, mm->texture_size,
-	                                      mm->texture, m->file, m->bilinear, at);
-	free(key);
-	if (im >= 0) {
-		out.pigment = MATERIAL_IMAGE;
-		out.texture = im;
-	}
-	return out;
-}
-
-/* The scene material of material k of the file of mesh object o, made on first use. */
-static uint32_t file_material_of(struct lowering *lw, const struct object_desc *o, uint32_t k)
-{
-	const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
-	struct mesh_cache_entry *entry = mesh_cached(lw, m->path);
-	int32_t **slots = &entry->materials[m->bilinear];
-	if (!*slots) {
-		*slots = xmalloc(entry->data.nmaterials * sizeof **slots);
-		for (size_t i = 0; i < entry->data.nmaterials; i++)
-			(*slots)[i] = -1;
-	}
-	if ((*slots)[k] < 0) {
-		struct scene *sc = lw->sc;
-		xgrow((void **)&sc->materials, &lw->cap_materials, sc->nmaterials + 1, sizeof *sc->materials);
-		sc->materials[sc->nmaterials] = file_material(lw, m, &entry->data, &entry->data.materials[k], m->file_span);
-		(*slots)[k] = (int32_t)sc->nmaterials++;
-	}
-	return (uint32_t)(*slots)[k];
-}
-
-/* Whether object o's material is an image map looked up by UV coordinates. */
-static bool maps_uv(const struct lowering *lw, const struct object_desc *o)
-{
-	if (o->material < 0)
-		return false;
-	const struct material_desc *m = &lw->desc->materials[o->material];
-	return m->pigment == PIGMENT_IMAGE && lw->desc->images[m->pattern].map == IMAGE_MAP_UV;
-}
-
-/* The texture coordinates of mesh data (its vertices from base on) into geo.uvs, the
- * vertices before them without any; false, after an error at o, when o's material needs
- * them and there are none, or the mesh is a CSG's part, whose hits carry no triangle. */
-static bool mesh_uvs(struct lowering *lw, const struct object_desc *o, const struct mesh_data *data, uint32_t base,
-                     bool part)
-{
-	struct geometry *g = &lw->sc->geo;
-	if (maps_uv(lw, o) && (part || !data->uvs)) {
-		const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
-		if (part)
-			diag_error(lw->diag, o->span, "'map uv' is not available on a mesh inside a CSG; use another map");
-		else
-			diag_error(lw->diag, o->span, "'map uv' needs texture coordinates, and mesh file '%s' has none", m->file);
-		return false;
-	}
-	if (!data->uvs || part)
-		return true;
-	xgrow((void **)&g->uvs, &lw->cap_uvs, g->nvertices, sizeof *g->uvs);
-	memset(&g->uvs[g->nuvs], 0, (base - g->nuvs) * sizeof *g->uvs);
-	for (size_t i = 0; i < data->nvertices; i++)
-		g->uvs[base + i] = (struct uv){ data->uvs[i][0], data->uvs[i][1] };
-	g->nuvs = g->nvertices;
-	return true;
-}
-
-static bool lower_mesh(struct lowering *lw, const struct object_desc *o, const struct span *at, struct part *part)
-{
-	struct mesh_data inline_data;
-	const struct mesh_data *data = mesh_data_of(lw, o, &inline_data);
-	if (!data)
-		return false;
-	struct scene *sc = lw->sc;
-	static const struct xform identity = { { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
-	const struct xform *x = o->xform >= 0 ? &lw->desc->xforms[o->xform] : &identity;
-	struct affine inv = xform_inverse(x);
-	bool mirrored = xform_mirrors(x);
-	uint32_t surface = add_surface(lw, o);
-	/* a file's own materials, unless the mesh statement gives one: a surface for each
-	 * (LANGUAGE.md 11), made when a face first uses it */
-	bool own = data->face_material && (o->material < 0 || o->inherited) && !part;
-	uint32_t *file_surfaces = NULL;
-	if (own) {
-		file_surfaces = xmalloc(data->nmaterials * sizeof *file_surfaces);
-		for (size_t k = 0; k < data->nmaterials; k++)
-			file_surfaces[k] = UINT32_MAX;
-	}
-	uint32_t base = (uint32_t)sc->geo.nvertices;
-	double extent = 0;
-	for (size_t i = 0; i < data->nvertices; i++) {
-		uint32_t v = add_vertex(lw, xform_point(x, v3a(data->vertices[i])));
-		extent = fmax(extent, extent_of(sc->geo.vertices[v]));
-	}
-	/* beyond it, its triangles' areas are lost to rounding: not the file's fault */
-	if (!check_extent(lw, *at, "this mesh", extent) || !mesh_uvs(lw, o, data, base, part != NULL)) {
-		free(file_surfaces);
-		return false;
-	}
-
-	uint32_t nbase = (uint32_t)sc->geo.nnormals;
-	if (o->smooth) {
-		xgrow((void **)&sc->geo.normals, &lw->cap_normals, sc->geo.nnormals + data->nvertices, sizeof *sc->geo.normals);
-		struct vec3 *normals = &sc->geo.normals[nbase];
-		if (data->nnormals == data->nvertices && data->normals) {
-			for (size_t i = 0; i < data->nvertices; i++)
-				normals[i] = affine_normal(&inv, v3a(data->normals[i]));
-		} else {
-			/* area-weighted: the unnormalised face normal is twice the face's area */
-			memset(normals, 0, data->nvertices * sizeof *normals);
-			for (size_t f = 0; f < data->nfaces; f++) {
-				const uint32_t *v = data->faces[f];
-				struct vec3 a = sc->geo.vertices[base + v[0]], b = sc->geo.vertices[base + v[1]], c = sc->geo.vertices[base + v[2]];
-				struct vec3 fn = vcross(vsub(b, a), vsub(c, a));
-				if (mirrored)
-					fn = vneg(fn);
-				for (int k = 0; k < 3; k++)
-					normals[v[k]] = vadd(normals[v[k]], fn);
-			}
-		}
-		for (size_t i = 0; i < data->nvertices; i++) {
-			double len = vlen(normals[i]);
-			normals[i] = len > 0 && isfinite(len) ? vscale(normals[i], 1 / len) : v3s(0);
-		}
-		sc->geo.nnormals += data->nvertices;
-	}
-	size_t dropped = 0, coinciding = 0, first = sc->geo.npart_triangles;
-	for (size_t f = 0; f < data->nfaces; f++) {
-		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
-		for (int k = 0; k < 3; k++) {
-			v[k] = base + data->faces[f][k];
-			if (o->smooth)
-				n[k] = nbase + data->faces[f][k];
-		}
-		/* a vertex without a usable normal (all its faces degenerate): shade the face flat */
-		if (o->smooth && (vzero(sc->geo.normals[n[0]]) || vzero(sc->geo.normals[n[1]]) || vzero(sc->geo.normals[n[2]])))
-			n[0] = n[1] = n[2] = TRIANGLE_FLAT;
-		if (mirrored) {
-			uint32_t t = v[1], tn = n[1];
-			v[1] = v[2], n[1] = n[2];
-			v[2] = t, n[2] = tn;
-		}
-		uint32_t face_surface = surface;
-		uint32_t k = own ? data->face_material[f] : MESH_NO_MATERIAL;
-		if (k != MESH_NO_MATERIAL) {
-			if (file_surfaces[k] == UINT32_MAX)
-				file_surfaces[k] = add_surface_of(lw, o, file_material_of(lw, o, k));
-			face_surface = file_surfaces[k];
-		}
-		if (!add_triangle(lw, v, n, face_surface, part != NULL)) {
-			dropped++;
-			coinciding += corners_coincide(sc->geo.vertices[v[0]], sc->geo.vertices[v[1]], sc->geo.vertices[v[2]]);
-		}
-	}
-	free(file_surfaces);
-	if (dropped)
-		warn_no_area(lw, *at, dropped, coinciding, data->nfaces);
-	if (part) {
-		const struct mesh_desc *m = &lw->desc->meshes[o->u.mesh.index];
-		struct affine xa = affine_of(x);
-		struct vec3 w = vunit(affine_vector(&xa, v3a(m->inside_vector)));
-		*part = (struct part){ .kind = PART_MESH, .surface = surface, .first = (uint32_t)first,
-		                       .count = (uint32_t)(sc->geo.npart_triangles - first), .a = { w.x, w.y, w.z } };
-		return part->count > 0;
-	}
-	if (lw->desc->meshes[o->u.mesh.index].file)
-		add_mesh_use(lw, o, surface, x, &inv, mirrored);
-	return true;
 }
 
 /* The index of the object after object i and its members. */
@@ -585,7 +132,7 @@ static int64_t lower_csg(struct lowering *lw, size_t i, bool invert)
 static int64_t lower_part(struct lowering *lw, size_t i, bool invert)
 {
 	const struct object_desc *o = &lw->desc->objects[i];
-	struct affine x = o->xform >= 0 ? affine_of(&lw->desc->xforms[o->xform]) : affine_identity;
+	struct affine x = o->xform >= 0 ? lower_affine_of(&lw->desc->xforms[o->xform]) : affine_identity;
 	struct part p;
 	bool ok = true;
 	switch (o->kind) {
@@ -624,7 +171,7 @@ static int64_t lower_part(struct lowering *lw, size_t i, bool invert)
 		return -1;
 	}
 	p.inverse = o->inverse != invert;
-	p.surface = add_surface(lw, o);
+	p.surface = lower_add_surface(lw, o);
 	return add_part(lw, &p);
 }
 
@@ -654,7 +201,7 @@ static void lower_solid(struct lowering *lw, size_t i)
 	}
 	double extent = fmax(vmaxc(vabs(lo)), vmaxc(vabs(hi)));
 	if (isfinite(extent)) {
-		check_extent(lw, o->span, "this object", extent);
+		lower_check_extent(lw, o->span, "this object", extent);
 		xgrow((void **)&g->solids, &lw->cap_solids, g->nsolids + 1, sizeof *g->solids);
 		g->solids[g->nsolids++] = (uint32_t)root;
 	} else {
@@ -706,15 +253,15 @@ static void lower_object(struct lowering *lw, size_t i)
 	case OBJ_SPHERE: {
 		/* a scale alike in every direction: any column's length is the scale */
 		double scale = hypot(hypot(x->m[0][0], x->m[1][0]), x->m[2][0]); /* no underflow at 1e-250 */
-		struct sphere s = { xform_point(x, v3a(o->u.sphere.center)), o->u.sphere.radius * scale, 0 };
-		check_extent(lw, o->span, "this sphere", extent_of(s.center) + s.radius);
+		struct sphere s = { lower_xform_point(x, v3a(o->u.sphere.center)), o->u.sphere.radius * scale, 0 };
+		lower_check_extent(lw, o->span, "this sphere", lower_extent_of(s.center) + s.radius);
 		if (!(s.radius >= MIN_RADIUS)) {
 			diag_warning(lw->diag, o->span,
 			             "this sphere's radius is %g, below 1e-100, too small to compute with: it is not drawn",
 			             s.radius);
 			break;
 		}
-		s.surface = add_surface(lw, o);
+		s.surface = lower_add_surface(lw, o);
 		xgrow((void **)&sc->geo.spheres, &lw->cap_spheres, sc->geo.nspheres + 1, sizeof *sc->geo.spheres);
 		sc->geo.spheres[sc->geo.nspheres++] = s;
 		break;
@@ -722,31 +269,31 @@ static void lower_object(struct lowering *lw, size_t i)
 	case OBJ_PLANE: {
 		/* the world normal and offset, as a plane part has them */
 		struct part world;
-		struct affine xa = affine_of(x);
+		struct affine xa = lower_affine_of(x);
 		part_make_plane(&world, v3a(o->u.plane.normal), o->u.plane.offset, &xa);
 		xgrow((void **)&sc->geo.planes, &lw->cap_planes, sc->geo.nplanes + 1, sizeof *sc->geo.planes);
 		struct plane *p = &sc->geo.planes[sc->geo.nplanes++];
 		p->normal = v3(world.a[0], world.a[1], world.a[2]);
 		p->offset = world.a[3];
-		p->surface = add_surface(lw, o);
-		check_extent(lw, o->span, "this plane", fabs(p->offset));
+		p->surface = lower_add_surface(lw, o);
+		lower_check_extent(lw, o->span, "this plane", fabs(p->offset));
 		break;
 	}
 	case OBJ_TRIANGLE: {
 		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
 		double extent = 0;
 		for (int k = 0; k < 3; k++) {
-			v[k] = add_vertex(lw, xform_point(x, v3a(o->u.triangle.v[k])));
-			extent = fmax(extent, extent_of(sc->geo.vertices[v[k]]));
+			v[k] = lower_add_vertex(lw, lower_xform_point(x, v3a(o->u.triangle.v[k])));
+			extent = fmax(extent, lower_extent_of(sc->geo.vertices[v[k]]));
 		}
-		check_extent(lw, o->span, "this triangle", extent);
-		if (xform_mirrors(x)) {
+		lower_check_extent(lw, o->span, "this triangle", extent);
+		if (lower_xform_mirrors(x)) {
 			uint32_t t = v[1];
 			v[1] = v[2];
 			v[2] = t;
 		}
-		uint32_t surface = add_surface(lw, o);
-		if (!add_triangle(lw, v, n, surface, false))
+		uint32_t surface = lower_add_surface(lw, o);
+		if (!lower_add_triangle(lw, v, n, surface, false))
 			sc->geo.nvertices -= 3; /* eval.c warned already */
 		break;
 	}
@@ -858,7 +405,7 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 
 	const struct camera_desc *c = &desc->camera;
 	camera_setup(&out->camera, v3a(c->location), v3a(c->look_at), v3a(c->up), c->fov, c->width, c->height);
-	check_extent(&lw, c->span, "the camera", fmax(extent_of(v3a(c->location)), extent_of(v3a(c->look_at))));
+	lower_check_extent(&lw, c->span, "the camera", fmax(lower_extent_of(v3a(c->location)), lower_extent_of(v3a(c->look_at))));
 	out->lights = xcalloc(desc->nlights, sizeof *out->lights);
 	for (size_t i = 0; i < desc->nlights; i++) {
 		const struct light_desc *l = &desc->lights[i];
@@ -869,7 +416,7 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 		li->color = vscale(v3a(l->color), l->intensity);
 		li->shadowless = l->shadowless;
 		if (!l->directional)
-			check_extent(&lw, l->span, "this light", extent_of(li->pos));
+			lower_check_extent(&lw, l->span, "this light", lower_extent_of(li->pos));
 	}
 
 	lower_texture_begin(&lw.tex, d, desc, out);
@@ -906,12 +453,7 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	if (other_bytes >= 0 && d->errors == errors)
 		warn_dark(&lw);
 
-	for (size_t i = 0; i < lw.nmesh_cache; i++) {
-		mesh_import_free(&lw.mesh_cache[i].data);
-		free(lw.mesh_cache[i].materials[0]);
-		free(lw.mesh_cache[i].materials[1]);
-	}
-	free(lw.mesh_cache);
+	lower_mesh_release(&lw);
 	free(lw.material_map);
 	if (out->geo.nspheres + out->geo.ntriangles + out->geo.nplanes + out->geo.nsolids >= (1u << SHAPE_KIND_SHIFT) ||
 	    out->geo.nunbounded >= SHAPE_UNBOUNDED) {
