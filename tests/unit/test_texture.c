@@ -386,20 +386,20 @@ static void test_bumps(void)
 	 * rotation turns the perturbation with it */
 	pt.kind = TEXTURE_BUMPS;
 	struct vec3 nrm = vnorm(v3(0.2, 1, -0.3));
-	struct vec3 plain = pattern_bump_normal(&pt, q, nrm);
+	struct vec3 plain = pattern_bump_normal(&pt, &pt.to_pattern, q, nrm);
 	struct vec3 want = vnorm(vadd(nrm, pattern_bump(&pt, q)));
 	CHECK_NEAR(vlen(vsub(plain, want)), 0, 1e-15);
 	pt.to_pattern = (struct affine){ { { 10, 0, 0, 3 }, { 0, 10, 0, -1 }, { 0, 0, 10, 2 } } };
-	struct vec3 scaled = pattern_bump_normal(&pt, q, nrm);
+	struct vec3 scaled = pattern_bump_normal(&pt, &pt.to_pattern, q, nrm);
 	CHECK_NEAR(vlen(vsub(scaled, want)), 0, 1e-14);
 	pt.to_pattern = (struct affine){ { { 0, -1, 0, 0 }, { 1, 0, 0, 0 }, { 0, 0, 1, 0 } } };
-	struct vec3 turned = pattern_bump_normal(&pt, q, nrm);
+	struct vec3 turned = pattern_bump_normal(&pt, &pt.to_pattern, q, nrm);
 	want = vnorm(vadd(nrm, affine_normal(&pt.to_pattern, pattern_bump(&pt, q))));
 	CHECK_NEAR(vlen(vsub(turned, want)), 0, 1e-15);
 	/* a mirror keeps the normal on its side */
 	pt.to_pattern = (struct affine){ { { -1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } } };
 	pt.amount = 0;
-	struct vec3 same = pattern_bump_normal(&pt, q, nrm);
+	struct vec3 same = pattern_bump_normal(&pt, &pt.to_pattern, q, nrm);
 	CHECK_NEAR(vlen(vsub(same, nrm)), 0, 1e-15);
 }
 
