@@ -601,11 +601,44 @@ static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 
 	fputs(" }\n", p->f);
 }
 
+/* A sphere whose material is an image looked up by UV coordinates, turned as its object is:
+ * POV-Ray's uv_mapping reads the sphere's own rotation (its Trans), which a world-space
+ * sphere lacks, so it is written about the origin and placed by the object's map with the
+ * scale taken out (the radius carries it). The material follows the placement, so that a
+ * bump pattern's object transform applies once; a uv-mapped pigment ignores it. */
+static bool write_turned_uv_sphere(struct pov *p, const struct sphere *s)
+{
+	const struct scene *sc = p->sc;
+	const struct surface *srf = &sc->geo.surfaces[s->surface];
+	const struct material *m = &sc->materials[srf->material];
+	if (srf->to_object < 0 || m->pigment != MATERIAL_IMAGE || sc->image_maps[m->texture].map != TEXTURE_MAP_UV)
+		return false;
+	/* to_object's linear part is R^-1 / s for a rotation (or mirror) R and a scale s */
+	const struct affine *to = &sc->affines[srf->to_object];
+	double k = 1 / vlen(v3(to->m[0][0], to->m[0][1], to->m[0][2]));
+	struct affine to_own;
+	for (int r = 0; r < 3; r++) {
+		for (int c = 0; c < 3; c++)
+			to_own.m[r][c] = to->m[r][c] * k;
+		to_own.m[r][3] = -(to_own.m[r][0] * s->center.x + to_own.m[r][1] * s->center.y + to_own.m[r][2] * s->center.z);
+	}
+	fputs("sphere { <0, 0, 0>, ", p->f);
+	pov_num(p->f, s->radius);
+	fputs(" transform { ", p->f);
+	pov_matrix(p->f, &to_own);
+	fputs(" inverse } ", p->f);
+	pov_material_ref(p->f, sc, s->surface, false);
+	fputs(" }\n", p->f);
+	return true;
+}
+
 static void write_objects(struct pov *p)
 {
 	const struct scene *sc = p->sc;
 	for (size_t i = 0; i < sc->geo.nspheres; i++)
-		write_vec_num_shape(p, "sphere", sc->geo.spheres[i].center, sc->geo.spheres[i].radius, sc->geo.spheres[i].surface);
+		if (!write_turned_uv_sphere(p, &sc->geo.spheres[i]))
+			write_vec_num_shape(p, "sphere", sc->geo.spheres[i].center, sc->geo.spheres[i].radius,
+			                    sc->geo.spheres[i].surface);
 	for (size_t i = 0; i < sc->geo.nplanes; i++)
 		write_vec_num_shape(p, "plane", sc->geo.planes[i].normal, sc->geo.planes[i].offset, sc->geo.planes[i].surface);
 	for (size_t first = 0; first < sc->geo.ntriangles;) {

@@ -71,10 +71,13 @@ EXTRA_DIST += $(POV_TESTS) tests/pov/run-pov tests/pov/mirrors.inc tests/pov/pal
 # small textures are written by tests/pov/surface_images.py.
 POV_SURFACE_TESTS = \
 	tests/pov/surface_gradient.scn \
+	tests/pov/surface_image_planar.scn \
+	tests/pov/surface_image_wrap.scn \
 	tests/pov/surface_leopard.scn \
 	tests/pov/surface_marble.scn \
 	tests/pov/surface_onion.scn \
 	tests/pov/surface_radial.scn \
 	tests/pov/surface_wood.scn
 TESTS += $(POV_SURFACE_TESTS)
-EXTRA_DIST += $(POV_SURFACE_TESTS) tests/pov/surface_images.py
+EXTRA_DIST += $(POV_SURFACE_TESTS) tests/pov/surface_images.py tests/pov/surface_tex.png \
+	tests/pov/surface_linear.png tests/pov/surface_g22.png
