@@ -72,12 +72,15 @@ EXTRA_DIST += $(POV_TESTS) tests/pov/run-pov tests/pov/mirrors.inc tests/pov/pal
 POV_SURFACE_TESTS = \
 	tests/pov/surface_gradient.scn \
 	tests/pov/surface_image_planar.scn \
+	tests/pov/surface_image_uv.scn \
 	tests/pov/surface_image_wrap.scn \
 	tests/pov/surface_leopard.scn \
 	tests/pov/surface_marble.scn \
+	tests/pov/surface_mesh_files.scn \
 	tests/pov/surface_onion.scn \
 	tests/pov/surface_radial.scn \
 	tests/pov/surface_wood.scn
 TESTS += $(POV_SURFACE_TESTS)
 EXTRA_DIST += $(POV_SURFACE_TESTS) tests/pov/surface_images.py tests/pov/surface_tex.png \
-	tests/pov/surface_linear.png tests/pov/surface_g22.png
+	tests/pov/surface_linear.png tests/pov/surface_g22.png tests/pov/surface_mtl.png \
+	tests/pov/surface_box.obj tests/pov/surface_box.mtl
