@@ -76,6 +76,7 @@ POV_SURFACE_TESTS = \
 	tests/pov/surface_image_wrap.scn \
 	tests/pov/surface_leopard.scn \
 	tests/pov/surface_marble.scn \
+	tests/pov/surface_materials.scn \
 	tests/pov/surface_mesh_files.scn \
 	tests/pov/surface_onion.scn \
 	tests/pov/surface_radial.scn \
