@@ -84,4 +84,4 @@ POV_SURFACE_TESTS = \
 TESTS += $(POV_SURFACE_TESTS)
 EXTRA_DIST += $(POV_SURFACE_TESTS) tests/pov/surface_images.py tests/pov/surface_tex.png \
 	tests/pov/surface_linear.png tests/pov/surface_g22.png tests/pov/surface_mtl.png \
-	tests/pov/surface_box.obj tests/pov/surface_box.mtl
+	tests/pov/surface_box.obj tests/pov/surface_box.mtl tests/pov/surface_quad.gltf
