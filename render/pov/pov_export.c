@@ -353,6 +353,8 @@ static void analyse(struct pov *p)
 			all_kept = smooth_kept(sc, i);
 		if (p->listed[first] >= 0) {
 			p->how[first] = WRITE_MESH2;
+		} else if (last - first == 1 && sc->geo.uvs && uv_mapped(sc, sc->geo.triangles[first].surface)) {
+			p->how[first] = WRITE_MESH2;  /* the one with uv_vectors */
 		} else if (last - first == 1) {
 			/* a lone triangle in double precision, unless POV-Ray would drop it */
 			p->how[first] = all_kept ? WRITE_TRIANGLE : WRITE_MESH2;
