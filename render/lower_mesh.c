@@ -56,9 +56,10 @@ const struct mesh_data *lower_mesh_data(struct lowering *lw, const struct object
 	return m->file ? mesh_file(lw, m) : inline_data;
 }
 
-/* Records that mesh file object o made surface, placed by x (inverse inv). */
+/* Records that mesh file object o made surface (and its faces triangles [first, the
+ * current end)), placed by x (inverse inv). */
 static void add_mesh_use(struct lowering *lw, const struct object_desc *o, uint32_t surface, const struct xform *x,
-                         const struct affine *inv, bool mirrored)
+                         const struct affine *inv, bool mirrored, size_t first)
 {
 	struct scene *sc = lw->sc;
 	int32_t *source = &mesh_cached(lw, lw->desc->meshes[o->u.mesh.index].path)->source[o->smooth];
@@ -66,7 +67,8 @@ static void add_mesh_use(struct lowering *lw, const struct object_desc *o, uint3
 		*source = (int32_t)sc->nmesh_sources++;
 	xgrow((void **)&sc->mesh_uses, &lw->cap_mesh_uses, sc->nmesh_uses + 1, sizeof *sc->mesh_uses);
 	struct mesh_use *u = &sc->mesh_uses[sc->nmesh_uses++];
-	*u = (struct mesh_use){ .surface = surface, .mesh = (uint32_t)*source, .mirrored = mirrored, .to_object = *inv };
+	*u = (struct mesh_use){ .surface = surface, .mesh = (uint32_t)*source, .mirrored = mirrored, .to_object = *inv,
+	                        .first = first, .last = sc->geo.ntriangles };
 	memcpy(u->to_world.m, x->m, sizeof u->to_world.m);
 }
 
@@ -256,7 +258,7 @@ bool lower_mesh(struct lowering *lw, const struct object_desc *o, const struct s
 		}
 		sc->geo.nnormals += data->nvertices;
 	}
-	size_t dropped = 0, coinciding = 0, first = sc->geo.npart_triangles;
+	size_t dropped = 0, coinciding = 0, first = part ? sc->geo.npart_triangles : sc->geo.ntriangles;
 	for (size_t f = 0; f < data->nfaces; f++) {
 		uint32_t v[3], n[3] = { TRIANGLE_FLAT, TRIANGLE_FLAT, TRIANGLE_FLAT };
 		for (int k = 0; k < 3; k++) {
@@ -296,7 +298,7 @@ bool lower_mesh(struct lowering *lw, const struct object_desc *o, const struct s
 		return part->count > 0;
 	}
 	if (lw->desc->meshes[o->u.mesh.index].file)
-		add_mesh_use(lw, o, surface, x, &inv, mirrored);
+		add_mesh_use(lw, o, surface, x, &inv, mirrored, first);
 	return true;
 }
 

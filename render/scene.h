@@ -61,6 +61,9 @@ struct mesh_use {
 	uint32_t mesh;                 /* 0 .. nmesh_sources - 1 */
 	bool mirrored;                 /* to_world mirrors: lowering swapped each face's corners 1 and 2 */
 	struct affine to_world, to_object;
+	/* its triangles, geo.triangles[first, last): surface's, and with a file's own materials
+	 * also the surfaces lowering made for them, face by face */
+	size_t first, last;
 };
 
 enum sky_kind { SKY_BLACK, SKY_CONSTANT, SKY_ZENITH_HORIZON, SKY_LATLONG };

@@ -50,6 +50,10 @@ struct pov {
 	int32_t *shares;               /* per mesh use: the use whose mesh2 is declared for it
 	                                  (itself for that one), or -1: written alone */
 	size_t *run_of;                /* per mesh use written as mesh2: its first triangle */
+	/* mesh file objects with the file's own materials: one mesh2 each, with a texture_list */
+	int32_t *listed;               /* per triangle: the mesh use whose triangles start there
+	                                  and take more than its one surface, or -1 */
+	bool *listed_material;         /* per material: a texture_list names it */
 };
 
 static void note(struct pov *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -113,13 +117,78 @@ static void write_union(struct pov *p, size_t first, size_t last)
 	fputs("\n}\n", f);
 }
 
-/* Triangles [first, last) of one surface, as a mesh2 in world space. */
-static void write_mesh2(struct pov *p, size_t first, size_t last)
+/* Whether surface s's material is an image looked up by UV coordinates. */
+static bool uv_mapped(const struct scene *sc, uint32_t s)
 {
-	pov_mesh2_body(p->f, p->sc, p->sc->geo.triangles, first, last, NULL);
-	fputs("  ", p->f);
-	pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface, false);
-	fputs("\n}\n", p->f);
+	const struct material *m = &sc->materials[sc->geo.surfaces[s].material];
+	return m->pigment == MATERIAL_IMAGE && sc->image_maps[m->texture].map == TEXTURE_MAP_UV;
+}
+
+/* What the mesh2 of triangles [first, last) carries beyond its shape: UVs where a material
+ * needs them, and with listed the texture_list of its surfaces (*list, to be freed). */
+static struct pov_mesh2_extra mesh2_extra(const struct pov *p, size_t first, size_t last, bool listed, uint32_t **list)
+{
+	const struct scene *sc = p->sc;
+	struct pov_mesh2_extra x = { 0 };
+	*list = NULL;
+	if (listed)
+		*list = xmalloc((last - first) * sizeof **list);
+	for (size_t i = first; i < last; i++) {
+		uint32_t s = sc->geo.triangles[i].surface;
+		x.uvs |= sc->geo.uvs && uv_mapped(sc, s);
+		if (!listed)
+			continue;
+		size_t k = 0;
+		while (k < x.ntextures && (*list)[k] != s)
+			k++;
+		if (k == x.ntextures)
+			(*list)[x.ntextures++] = s;
+	}
+	x.textures = *list;
+	return x;
+}
+
+/* The interior of a mesh2 whose texture_list names the materials of surfaces list[0, n):
+ * the mesh2 holds one for all (POV-Ray's textures have none), that of the first material
+ * with one, with a comment when another's ior differs. */
+static void listed_interior(struct pov *p, const uint32_t *list, size_t n)
+{
+	bool have = false, differ = false;
+	double ior = 1;
+	for (size_t k = 0; k < n; k++) {
+		double r;
+		if (!pov_material_interior(&p->sc->materials[p->sc->geo.surfaces[list[k]].material], &r))
+			continue;
+		differ |= have && r != ior;
+		ior = have ? ior : r;
+		have = true;
+	}
+	if (!have)
+		return;
+	fputs("  interior { ior ", p->f);
+	pov_num(p->f, ior);
+	fputs(" }", p->f);
+	if (differ)
+		fputs("  // not exact: its transmitting faces have different iors; POV-Ray's mesh2 has one", p->f);
+	fputc('\n', p->f);
+}
+
+/* Triangles [first, last), of one surface or (listed) a mesh file object's with its own
+ * materials, as a mesh2 in world space. */
+static void write_mesh2(struct pov *p, size_t first, size_t last, bool listed)
+{
+	uint32_t *list;
+	struct pov_mesh2_extra x = mesh2_extra(p, first, last, listed, &list);
+	pov_mesh2_body(p->f, p->sc, p->sc->geo.triangles, first, last, NULL, &x);
+	if (listed) {
+		listed_interior(p, list, x.ntextures);
+	} else {
+		fputs("  ", p->f);
+		pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface, false);
+		fputc('\n', p->f);
+	}
+	fputs("}\n", p->f);
+	free(list);
 }
 
 /* Triangles [first, last), the mesh file object of mesh use u, placed by its transform
@@ -129,16 +198,24 @@ static void write_placed(struct pov *p, size_t first, size_t last, int32_t u)
 {
 	const struct mesh_use *use = &p->sc->mesh_uses[u];
 	FILE *f = p->f;
+	bool listed = p->listed[first] == u;
 	if (p->shares[u] == u) {
 		fprintf(f, "// scn_mesh_%u: a mesh file that several objects use, in its own coordinates;"
 		           " each object { } places it\n#declare scn_mesh_%u = ", (unsigned)use->mesh, (unsigned)use->mesh);
-		pov_mesh2_body(f, p->sc, p->sc->geo.triangles, first, last, use);
+		uint32_t *list;
+		struct pov_mesh2_extra x = mesh2_extra(p, first, last, listed, &list);
+		pov_mesh2_body(f, p->sc, p->sc->geo.triangles, first, last, use, &x);
+		if (listed)
+			listed_interior(p, list, x.ntextures);
 		fputs("}\n", f);
+		free(list);
 	}
 	fprintf(f, "object { scn_mesh_%u ", (unsigned)use->mesh);
 	pov_matrix(f, &use->to_world);
-	fputs(" ", f);
-	pov_material_ref(p->f, p->sc, use->surface, false);
+	if (!listed) {
+		fputs(" ", f);
+		pov_material_ref(p->f, p->sc, use->surface, false);
+	}
 	fputs(" }\n", f);
 }
 
@@ -216,6 +293,35 @@ static size_t run_end(const struct scene *sc, size_t first)
 	return last;
 }
 
+/* The triangles written as one object from first: a run, or a mesh file object with its
+ * own materials (p->listed) whole. */
+static size_t unit_end(const struct pov *p, size_t first)
+{
+	return p->listed[first] >= 0 ? p->sc->mesh_uses[p->listed[first]].last : run_end(p->sc, first);
+}
+
+/* Which mesh file objects take more surfaces than their own (a file's own materials, face
+ * by face): each is written as one mesh2 with a texture_list (p->listed, p->listed_material). */
+static void find_listed(struct pov *p)
+{
+	const struct scene *sc = p->sc;
+	p->listed = xmalloc((sc->geo.ntriangles ? sc->geo.ntriangles : 1) * sizeof *p->listed);
+	for (size_t i = 0; i < sc->geo.ntriangles; i++)
+		p->listed[i] = -1;
+	p->listed_material = xcalloc(sc->nmaterials ? sc->nmaterials : 1, sizeof *p->listed_material);
+	for (size_t u = 0; u < sc->nmesh_uses; u++) {
+		const struct mesh_use *use = &sc->mesh_uses[u];
+		bool own = false;
+		for (size_t i = use->first; i < use->last && !own; i++)
+			own = sc->geo.triangles[i].surface != use->surface;
+		if (!own)
+			continue;
+		p->listed[use->first] = (int32_t)u;
+		for (size_t i = use->first; i < use->last; i++)
+			p->listed_material[sc->geo.surfaces[sc->geo.triangles[i].surface].material] = true;
+	}
+}
+
 /* Whether POV-Ray keeps smooth face i: it drops a smooth_triangle unless its three
  * normals lie strictly on one side of it ("Degenerate triangle"); mesh2 keeps any. */
 static bool smooth_kept(const struct scene *sc, size_t i)
@@ -237,13 +343,19 @@ static void analyse(struct pov *p)
 	const struct scene *sc = p->sc;
 	size_t kept_as_mesh2 = 0, open = 0, boundary = 0, smooth_glass = 0;
 	for (size_t first = 0; first < sc->geo.ntriangles;) {
-		size_t last = run_end(sc, first);
-		const struct triangle *t = &sc->geo.triangles[first];
-		const struct material *m = &sc->materials[sc->geo.surfaces[t->surface].material];
+		size_t last = unit_end(p, first);
+		/* a transmitting face's material, else the first face's */
+		const struct material *m = NULL;
+		for (size_t i = first; i < last && (!m || vzero(m->transmit)); i++)
+			m = &sc->materials[sc->geo.surfaces[sc->geo.triangles[i].surface].material];
 		bool all_kept = true;
 		for (size_t i = first; i < last && all_kept; i++)
 			all_kept = smooth_kept(sc, i);
-		if (last - first == 1) {
+		if (p->listed[first] >= 0) {
+			p->how[first] = WRITE_MESH2;
+		} else if (last - first == 1 && sc->geo.uvs && uv_mapped(sc, sc->geo.triangles[first].surface)) {
+			p->how[first] = WRITE_MESH2;  /* the one with uv_vectors */
+		} else if (last - first == 1) {
 			/* a lone triangle in double precision, unless POV-Ray would drop it */
 			p->how[first] = all_kept ? WRITE_TRIANGLE : WRITE_MESH2;
 			kept_as_mesh2 += !all_kept;
@@ -345,6 +457,21 @@ static void analyse(struct pov *p)
 		     nested);
 }
 
+/* Whether the n faces from a and those from b have the same materials, each the same
+ * wherever it is placed: a plain colour, or an image looked up by UV coordinates (a
+ * texture_list in the file's own space is moved by each placement, which these ignore). */
+static bool same_textures(const struct scene *sc, size_t a, size_t b, size_t n)
+{
+	for (size_t i = 0; i < n; i++) {
+		uint32_t sa = sc->geo.triangles[a + i].surface, sb = sc->geo.triangles[b + i].surface;
+		const struct material *m = &sc->materials[sc->geo.surfaces[sa].material];
+		if (sc->geo.surfaces[sa].material != sc->geo.surfaces[sb].material || m->bump >= 0 ||
+		    (material_textured(m) && !uv_mapped(sc, sa)))
+			return false;
+	}
+	return true;
+}
+
 /* Which mesh file objects written as mesh2 place one declared mesh2 (p->shares): those
  * with the same faces as the first such use of the same file, shaded alike; the others
  * (their faces differ where lowering dropped some) are written alone. */
@@ -365,16 +492,18 @@ static void find_shared(struct pov *p)
 	for (size_t m = 0; m < sc->nmesh_sources; m++)
 		first_use[m] = -1;
 	for (size_t first = 0; first < sc->geo.ntriangles;) {
-		size_t last = run_end(sc, first);
-		int32_t u = p->use_of[sc->geo.triangles[first].surface];
+		size_t last = unit_end(p, first);
+		int32_t u = p->listed[first] >= 0 ? p->listed[first] : p->use_of[sc->geo.triangles[first].surface];
 		if (u >= 0 && p->how[first] == WRITE_MESH2) {
 			const struct mesh_use *use = &sc->mesh_uses[u];
 			int32_t d = first_use[use->mesh];
 			p->run_of[u] = first;
 			if (d < 0)
 				first_use[use->mesh] = u;
-			else if (run_end(sc, p->run_of[d]) - p->run_of[d] == last - first &&
-			         pov_same_faces(sc, p->run_of[d], first, last - first, sc->mesh_uses[d].mirrored != use->mirrored))
+			else if (unit_end(p, p->run_of[d]) - p->run_of[d] == last - first &&
+			         (p->listed[first] >= 0) == (p->listed[p->run_of[d]] >= 0) &&
+			         pov_same_faces(sc, p->run_of[d], first, last - first, sc->mesh_uses[d].mirrored != use->mirrored) &&
+			         (p->listed[first] < 0 || same_textures(sc, p->run_of[d], first, last - first)))
 				p->shares[u] = p->shares[d] = d;
 		}
 		first = last;
@@ -601,16 +730,49 @@ static void write_vec_num_shape(struct pov *p, const char *keyword, struct vec3 
 	fputs(" }\n", p->f);
 }
 
+/* A sphere whose material is an image looked up by UV coordinates, turned as its object is:
+ * POV-Ray's uv_mapping reads the sphere's own rotation (its Trans), which a world-space
+ * sphere lacks, so it is written about the origin and placed by the object's map with the
+ * scale taken out (the radius carries it). The material follows the placement, so that a
+ * bump pattern's object transform applies once; a uv-mapped pigment ignores it. */
+static bool write_turned_uv_sphere(struct pov *p, const struct sphere *s)
+{
+	const struct scene *sc = p->sc;
+	const struct surface *srf = &sc->geo.surfaces[s->surface];
+	const struct material *m = &sc->materials[srf->material];
+	if (srf->to_object < 0 || m->pigment != MATERIAL_IMAGE || sc->image_maps[m->texture].map != TEXTURE_MAP_UV)
+		return false;
+	/* to_object's linear part is R^-1 / s for a rotation (or mirror) R and a scale s */
+	const struct affine *to = &sc->affines[srf->to_object];
+	double k = 1 / vlen(v3(to->m[0][0], to->m[0][1], to->m[0][2]));
+	struct affine to_own;
+	for (int r = 0; r < 3; r++) {
+		for (int c = 0; c < 3; c++)
+			to_own.m[r][c] = to->m[r][c] * k;
+		to_own.m[r][3] = -(to_own.m[r][0] * s->center.x + to_own.m[r][1] * s->center.y + to_own.m[r][2] * s->center.z);
+	}
+	fputs("sphere { <0, 0, 0>, ", p->f);
+	pov_num(p->f, s->radius);
+	fputs(" transform { ", p->f);
+	pov_matrix(p->f, &to_own);
+	fputs(" inverse } ", p->f);
+	pov_material_ref(p->f, sc, s->surface, false);
+	fputs(" }\n", p->f);
+	return true;
+}
+
 static void write_objects(struct pov *p)
 {
 	const struct scene *sc = p->sc;
 	for (size_t i = 0; i < sc->geo.nspheres; i++)
-		write_vec_num_shape(p, "sphere", sc->geo.spheres[i].center, sc->geo.spheres[i].radius, sc->geo.spheres[i].surface);
+		if (!write_turned_uv_sphere(p, &sc->geo.spheres[i]))
+			write_vec_num_shape(p, "sphere", sc->geo.spheres[i].center, sc->geo.spheres[i].radius,
+			                    sc->geo.spheres[i].surface);
 	for (size_t i = 0; i < sc->geo.nplanes; i++)
 		write_vec_num_shape(p, "plane", sc->geo.planes[i].normal, sc->geo.planes[i].offset, sc->geo.planes[i].surface);
 	for (size_t first = 0; first < sc->geo.ntriangles;) {
-		size_t last = run_end(sc, first);
-		int32_t placed = p->use_of[sc->geo.triangles[first].surface];
+		size_t last = unit_end(p, first);
+		int32_t placed = p->listed[first] >= 0 ? p->listed[first] : p->use_of[sc->geo.triangles[first].surface];
 		if (p->how[first] == WRITE_TRIANGLE)
 			write_triangle(p, first);
 		else if (p->how[first] == WRITE_UNION)
@@ -618,7 +780,7 @@ static void write_objects(struct pov *p)
 		else if (placed >= 0 && p->shares[placed] >= 0)
 			write_placed(p, first, last, placed);
 		else
-			write_mesh2(p, first, last);
+			write_mesh2(p, first, last, p->listed[first] >= 0);
 		first = last;
 	}
 	for (size_t i = 0; i < sc->geo.nsolids; i++)
@@ -645,6 +807,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 			         " its sky differs by up to about 2.4e-4 of each value (half-float images agree exactly)");
 	}
 	p.how = xcalloc(sc->geo.ntriangles ? sc->geo.ntriangles : 1, sizeof *p.how);
+	find_listed(&p);
 	analyse(&p);
 	find_shared(&p);
 	write_header(&p);
@@ -656,13 +819,15 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	for (size_t i = 0; i < sc->geo.nsolids + sc->geo.nunbounded; i++)
 		pov_solid_one_body(sc, i < sc->geo.nsolids ? sc->geo.solids[i] : sc->geo.unbounded[i - sc->geo.nsolids], shared);
 	for (size_t i = 0; i < sc->nmaterials; i++)
-		pov_write_material(out, sc, i, shared[i], p.opt->pov_dir);
+		pov_write_material(out, sc, i, shared[i], p.listed_material[i], p.opt->pov_dir);
 	free(shared);
 	write_objects(&p);
 	free(p.how);
 	free(p.use_of);
 	free(p.shares);
 	free(p.run_of);
+	free(p.listed);
+	free(p.listed_material);
 	free(p.notes);
 	int rc = 0;
 	errno = 0;

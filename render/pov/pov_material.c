@@ -5,6 +5,8 @@
 #include "pov_material.h"
 
 #include <stdbool.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "pov_texture.h"
 #include "pov_write.h"
@@ -60,6 +62,25 @@ struct pov_material_context {
 	const char *pov_dir;
 };
 
+/* Whether m's image map is a texture embedded in a mesh file (a glb's): it has no file of
+ * its own for POV-Ray to read, only lowering's name for it, "MESHFILE#TEXTURE"; the twin
+ * shows the material's plain diffuse colour instead. */
+static bool embedded_image(const struct scene *sc, const struct material *m)
+{
+	const struct image *img = sc->image_maps[m->texture].image;
+	size_t file = 0;
+	while (sc->images[file] != img)
+		file++;
+	const char *path = sc->image_paths[file];
+	return strchr(path, '#') && access(path, R_OK) != 0;
+}
+
+/* Whether m's pigment is an image map that the twin writes as one. */
+static bool image_pigment(const struct scene *sc, const struct material *m)
+{
+	return m->pigment == MATERIAL_IMAGE && !embedded_image(sc, m);
+}
+
 /* A pigment of diffuse colours divided by div, with transmit t: plain, checker, a pattern
  * through its colour map, or an image map (whose texels the finish's diffuse divides:
  * diffuse_weight), then the bump pattern's normal. */
@@ -80,8 +101,12 @@ static void diffuse_pigment(FILE *f, const struct pov_material_context *cx, cons
 		pov_pattern_pigment(f, &cx->sc->patterns[m->texture], div, t);
 		break;
 	case MATERIAL_IMAGE:
-		pov_image_pigment(f, cx->sc, &cx->sc->image_maps[m->texture], t, cx->pov_dir);
-		break;
+		if (image_pigment(cx->sc, m)) {
+			pov_image_pigment(f, cx->sc, &cx->sc->image_maps[m->texture], t, cx->pov_dir);
+			break;
+		}
+		fputs("// not exact: a texture embedded in a mesh file, which POV-Ray cannot read: its plain colour\n    ", f);
+		/* fall through */
 	default:
 		fputs("pigment { rgbt ", f);
 		pov_vec4(f, vdiv(m->diffuse, div), t);
@@ -93,10 +118,10 @@ static void diffuse_pigment(FILE *f, const struct pov_material_context *cx, cons
 
 /* The finish's diffuse for a pigment divided by div: 1, as the colours are divided, but
  * 1 / div for an image map, whose texels cannot be. */
-static void diffuse_weight(FILE *f, const struct material *m, double div)
+static void diffuse_weight(FILE *f, const struct pov_material_context *cx, const struct material *m, double div)
 {
 	fputs(" diffuse ", f);
-	pov_num(f, m->pigment == MATERIAL_IMAGE ? 1 / div : 1);
+	pov_num(f, image_pigment(cx->sc, m) ? 1 / div : 1);
 }
 
 /* An image map with `once` leaves the plain diffuse colour outside the image: POV-Ray's
@@ -104,7 +129,7 @@ static void diffuse_weight(FILE *f, const struct material *m, double div)
  * mirror of its own (POV-Ray computes a clear layer's, measured). Exact with t = 0 only. */
 static bool image_once(const struct pov_material_context *cx, const struct material *m)
 {
-	return m->pigment == MATERIAL_IMAGE && cx->sc->image_maps[m->texture].once;
+	return image_pigment(cx->sc, m) && cx->sc->image_maps[m->texture].once;
 }
 
 static void roughness(FILE *f, double shininess)
@@ -145,7 +170,7 @@ static void write_single_layer(FILE *f, const struct pov_material_context *cx, c
 		fputs(" emission rgb ", f);
 		pov_vec(f, safe_div(m->emit, m->diffuse));
 	}
-	diffuse_weight(f, m, t < 1 ? 1 - t : 1);
+	diffuse_weight(f, cx, m, t < 1 ? 1 - t : 1);
 	fputs(" brilliance 1 specular ", f);
 	pov_num(f, s);
 	if (s != 0)
@@ -192,7 +217,7 @@ static void write_layers(FILE *f, const struct pov_material_context *cx, const s
 	fputs("  texture { ", f);                                                     /* D */
 	diffuse_pigment(f, cx, m, (1 - tD) * tE, tD);
 	fputs("\n            finish { ambient 0", f);
-	diffuse_weight(f, m, (1 - tD) * tE);
+	diffuse_weight(f, cx, m, (1 - tD) * tE);
 	fputs(" brilliance 1 specular 0 phong 0", f);
 	if (!m->fresnel && !vzero(m->reflect)) {
 		fputs(" reflection { rgb ", f);
@@ -222,7 +247,7 @@ static void write_textures(FILE *f, const struct pov_material_context *cx, const
 		write_layers(f, cx, m);
 }
 
-void pov_write_material(FILE *f, const struct scene *sc, size_t index, bool shared, const char *pov_dir)
+void pov_write_material(FILE *f, const struct scene *sc, size_t index, bool shared, bool listed, const char *pov_dir)
 {
 	const struct pov_material_context cx = { sc, pov_dir };
 	const struct material *m = &sc->materials[index];
@@ -278,6 +303,22 @@ void pov_write_material(FILE *f, const struct scene *sc, size_t index, bool shar
 		write_textures(f, &cx, m);
 		fputs("}\n", f);
 	}
+	if (listed) {
+		fprintf(f, "#declare scn_texture_%zu =  // its layers alone, for a mesh2's texture_list\n", index);
+		write_textures(f, &cx, m);
+	}
+}
+
+void pov_texture_ref(FILE *f, const struct scene *sc, uint32_t surface, bool world)
+{
+	const struct surface *s = &sc->geo.surfaces[surface];
+	fprintf(f, "texture { scn_texture_%u", (unsigned)s->material);
+	if (world && s->to_object >= 0 && material_textured(&sc->materials[s->material])) {
+		fputs(" transform { ", f);
+		pov_matrix(f, &sc->affines[s->to_object]);
+		fputs(" inverse }", f);
+	}
+	fputs(" }", f);
 }
 
 /* A textured material in object space gets the object's transform: POV-Ray applies the

@@ -2,6 +2,7 @@
  * in world space or in a mesh file's own space (a use that a matrix places). */
 #include "pov_mesh.h"
 
+#include "pov_material.h"
 #include "pov_write.h"
 
 /* A mesh2's coordinates: in world space, or, for own (a mesh file's use), in the file's
@@ -80,8 +81,17 @@ bool pov_same_faces(const struct scene *sc, size_t a, size_t b, size_t n, bool s
 	return true;
 }
 
+/* The index in extra's texture_list of face t's surface. */
+static size_t texture_index(const struct pov_mesh2_extra *extra, const struct triangle *t)
+{
+	size_t k = 0;
+	while (extra->textures[k] != t->surface)
+		k++;
+	return k;
+}
+
 void pov_mesh2_body(FILE *f, const struct scene *sc, const struct triangle *tris, size_t first, size_t last,
-                    const struct mesh_use *own)
+                    const struct mesh_use *own, const struct pov_mesh2_extra *extra)
 {
 	struct mesh_span m = mesh_span(tris, first, last);
 	fprintf(f, "mesh2 {\n  vertex_vectors { %lu", (unsigned long)(m.vmax - m.vmin + 1));
@@ -107,11 +117,29 @@ void pov_mesh2_body(FILE *f, const struct scene *sc, const struct triangle *tris
 			}
 		fputs(" }\n", f);
 	}
+	if (extra && extra->uvs) {
+		/* in double, as POV-Ray stores them (unlike the vertices) */
+		fprintf(f, "  uv_vectors { %lu", (unsigned long)(m.vmax - m.vmin + 1));
+		for (uint32_t v = m.vmin; v <= m.vmax; v++)
+			fprintf(f, "%s<%.17g, %.17g>", v % 4 == m.vmin % 4 ? ",\n    " : ", ", sc->geo.uvs[v].u, sc->geo.uvs[v].v);
+		fputs(" }\n", f);
+	}
+	bool listed = extra && extra->textures;
+	if (listed) {
+		fprintf(f, "  texture_list { %zu", extra->ntextures);
+		for (size_t k = 0; k < extra->ntextures; k++) {
+			fputs(",\n    ", f);
+			pov_texture_ref(f, sc, extra->textures[k], own == NULL);
+		}
+		fputs(" }\n", f);
+	}
 	fprintf(f, "  face_indices { %zu", last - first);
 	for (size_t i = first; i < last; i++) {
 		const uint32_t *v = tris[i].v;
 		fprintf(f, "%s<%lu,%lu,%lu>", (i - first) % 8 == 0 ? ",\n    " : ", ", (unsigned long)(v[0] - m.vmin),
 		        (unsigned long)(v[1] - m.vmin), (unsigned long)(v[2] - m.vmin));
+		if (listed)
+			fprintf(f, ", %zu", texture_index(extra, &tris[i]));
 	}
 	fputs(" }\n", f);
 	if (m.smooth && !m.per_vertex) {

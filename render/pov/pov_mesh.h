@@ -19,7 +19,15 @@ bool pov_same_faces(const struct scene *sc, size_t a, size_t b, size_t n, bool s
  * up to its material: in world space, or with own (a mesh file's use) in the file's own
  * space, into which own's to_object map takes the world-space vertices back and the
  * transpose of its to_world map the normals (POV-Ray's matrix brings them out again). */
+/* What a mesh2 carries beyond its shape: the vertices' UVs, and a texture per face. */
+struct pov_mesh2_extra {
+	bool uvs;                      /* uv_vectors from geo.uvs (one per vertex, so no uv_indices) */
+	const uint32_t *textures;      /* the surfaces whose textures form its texture_list (each
+	                                * face indexes its own surface's); NULL: none */
+	size_t ntextures;
+};
+/* With extra (or NULL), its UVs and texture_list; the textures in world space unless own. */
 void pov_mesh2_body(FILE *f, const struct scene *sc, const struct triangle *tris, size_t first, size_t last,
-                    const struct mesh_use *own);
+                    const struct mesh_use *own, const struct pov_mesh2_extra *extra);
 
 #endif

@@ -116,7 +116,7 @@ static void write_leaf(FILE *f, const struct scene *sc, const struct part *p, in
 		pov_num(f, p->a[3]);
 		break;
 	case PART_MESH:                /* world-space triangles, in single precision as any mesh2 */
-		pov_mesh2_body(f, sc, sc->geo.part_triangles, p->first, p->first + p->count, NULL);
+		pov_mesh2_body(f, sc, sc->geo.part_triangles, p->first, p->first + p->count, NULL, NULL);
 		fputs("  inside_vector ", f);
 		pov_vec(f, v3(p->a[0], p->a[1], p->a[2]));
 		break;

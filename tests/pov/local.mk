@@ -67,3 +67,21 @@ POV_TESTS = \
 TESTS += $(POV_TESTS)
 EXTRA_DIST += $(POV_TESTS) tests/pov/run-pov tests/pov/mirrors.inc tests/pov/palette.inc \
 	tests/pov/octa.obj tests/pov/env.exr
+# The surfaces of LANGUAGE.md section 11 (patterns, image maps, mesh files' materials): their
+# small textures are written by tests/pov/surface_images.py.
+POV_SURFACE_TESTS = \
+	tests/pov/surface_gradient.scn \
+	tests/pov/surface_image_planar.scn \
+	tests/pov/surface_image_uv.scn \
+	tests/pov/surface_image_wrap.scn \
+	tests/pov/surface_leopard.scn \
+	tests/pov/surface_marble.scn \
+	tests/pov/surface_materials.scn \
+	tests/pov/surface_mesh_files.scn \
+	tests/pov/surface_onion.scn \
+	tests/pov/surface_radial.scn \
+	tests/pov/surface_wood.scn
+TESTS += $(POV_SURFACE_TESTS)
+EXTRA_DIST += $(POV_SURFACE_TESTS) tests/pov/surface_images.py tests/pov/surface_tex.png \
+	tests/pov/surface_linear.png tests/pov/surface_g22.png tests/pov/surface_mtl.png \
+	tests/pov/surface_box.obj tests/pov/surface_box.mtl tests/pov/surface_quad.gltf
