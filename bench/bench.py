@@ -3,7 +3,9 @@
 The scene table: scn and POV-Ray 3.7 on the same scenes, runs alternating scn/POV-Ray, the
 median of each; POV-Ray renders the scene `scn pov` writes, with the command line written at
 its top plus +WT2. The language: the load of 10^6 spheres from a recursive macro against the
-same spheres from for loops, and the time of a macro call. The scaling study: render time
+same spheres from for loops, and the time of a macro call. Textures: the headline's spheres
+in patterns, bumps and an image map against their plain twin, and the memory of one image
+file that 1000 materials map. The scaling study: render time
 against the number of spheres for each accelerator. The Embree table: bench/embree_compare. Scenes and meshes are generated into a
 work folder (default /tmp/scn-bench), never committed."""
 
@@ -110,8 +112,9 @@ def median_run(runs):
 
 def make_scenes(work):
     """[(name, description, scene path)]: the five scenes of the issue, the solids of
-    LANGUAGE.md section 9 (10^4 quadrics and tori, a wall of 1000 CSG bricks) and the macros
-    of section 10 (a tree of 40958 objects from a macro that calls itself)."""
+    LANGUAGE.md section 9 (10^4 quadrics and tori, a wall of 1000 CSG bricks), the macros
+    of section 10 (a tree of 40958 objects from a macro that calls itself) and the surfaces
+    of section 11 (the headline's spheres, textured)."""
     bunny_ply = os.path.join(TOP, "examples", "bunny.ply")
     big_ply = os.path.join(work, "bunny-1m.ply")
     log("bench: writing scenes into", work)
@@ -124,6 +127,7 @@ def make_scenes(work):
     scenes.quadrics(os.path.join(work, "quadrics-1e4.scn"), 10000)
     scenes.csg_wall(os.path.join(work, "csg-wall.scn"))
     scenes.macro_tree(os.path.join(work, "macro-tree.scn"), 13)
+    surfaces_scenes(work)
     return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
             ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
             ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
@@ -132,7 +136,9 @@ def make_scenes(work):
             ("quadrics 1e4", "10000 boxes, cylinders, cones, ellipsoids, tori (2000 each), 1 light", "quadrics-1e4.scn"),
             ("csg wall", "1000 bricks, each a difference of a box and a cylinder, 1 light", "csg-wall.scn"),
             ("macro tree", "a macro calling itself twice, turned by rand(): 16383 cylinders, 24575 spheres, "
-             "1 light", "macro-tree.scn")]
+             "1 light", "macro-tree.scn"),
+            ("textured", "the headline's spheres in the ten patterns (some turbulent, some bumped) and an image "
+             "map, a marble floor", "textured.scn")]
 
 
 def scene_settings(path):
@@ -379,6 +385,96 @@ def print_language(result, same, runs):
            (med(ca, "cpu") - med(cb, "cpu")) / (CALL_FRAMES * calls) * 1e9))
 
 
+# ---- surfaces: the cost of patterns, image maps and bumps, and one image in memory ----
+
+# The issue's targets: the textured scene renders in at most TEXTURE_TARGET times the time of
+# its plain twin, and an image file that many materials map is held once.
+TEXTURE_TARGET = 1.3
+SHARED_N = 1000
+SHARED_IMAGE_SIZE = 1024  # the shared image's side in pixels: its texels are megabytes
+
+
+def surfaces_scenes(work):
+    """Writes textured.scn and plain.scn into work; returns their paths. The image map is
+    examples/crate.png."""
+    image = os.path.join(TOP, "examples", "crate.png")
+    paths = os.path.join(work, "textured.scn"), os.path.join(work, "plain.scn")
+    scenes.surfaces(paths[0], image, False)
+    scenes.surfaces(paths[1], image, True)
+    return paths
+
+
+def png_size(path):
+    """(width, height) from a PNG's IHDR."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
+def textures(work, runs):
+    """The textured scene against its plain twin, runs of each taking turns (and turns at going
+    first); and the peak RSS of SHARED_N spheres whose materials map one image file against one
+    sphere that maps it."""
+    textured, plain = surfaces_scenes(work)
+    out = os.path.join(work, "textures.png")
+    rt, rp = [], []
+    for i in range(runs):
+        log("bench: textures: textured and plain, run %d of %d" % (i + 1, runs))
+        order = [(textured, rt), (plain, rp)] if i % 2 == 0 else [(plain, rp), (textured, rt)]
+        for scene, rs in order:
+            rs.append(scn_render(scene, out))
+    image = os.path.join(work, "shared-image.png")
+    if not os.path.exists(image):
+        log("bench: textures: drawing a %d x %d image from examples/crate-texture.scn" %
+            (SHARED_IMAGE_SIZE, SHARED_IMAGE_SIZE))
+        subprocess.run([SCN, "render", os.path.join(TOP, "examples", "crate-texture.scn"), "-o", image,
+                        "-W", str(SHARED_IMAGE_SIZE), "-H", str(SHARED_IMAGE_SIZE), "-s", "1", "-q"], check=True)
+    mem = {}
+    for n in (1, SHARED_N):
+        scene = os.path.join(work, "shared-image-%d.scn" % n)
+        scenes.shared_image(scene, image, n)
+        mbs = []
+        for i in range(runs):
+            log("bench: textures: %d sphere(s) mapping one image, run %d of %d" % (n, i + 1, runs))
+            mbs.append(scn_render(scene, out)["mb"])
+        mem[n] = statistics.median(mbs)
+    return rt, rp, mem, png_size(image)
+
+
+def print_textures(rt, rp, mem, size, runs):
+    med = lambda rs, k: statistics.median(r[k] for r in rs)
+    s = rt[0]
+    print("surfaces (LANGUAGE.md section 11): textured, the headline's 1000 spheres and floor with every pigment a "
+          "pattern (the ten,")
+    print("some turbulent), bumps on some and an image map on one material in thirteen, against plain, its twin with "
+          "plain colours and")
+    print("no normals; 1280x1024, 5 spp, -j %d; %d runs of each, the two taking turns; the medians" % (THREADS, runs))
+    print()
+    head = "%-9s | %8s %8s %8s | %7s" % ("scene", "wall s", "render s", "min s", "Mrays/s")
+    print(head)
+    print("-" * len(head))
+    for name, rs in (("textured", rt), ("plain", rp)):
+        rays = statistics.median(r["rays"]["total"] / r["render"] for r in rs) * 1e-6
+        print("%-9s | %8.2f %8.2f %8.2f | %7.2f" % (name, med(rs, "wall"), med(rs, "render"),
+                                                   min(r["render"] for r in rs), rays))
+    print()
+    ratio = med(rt, "render") / med(rp, "render")
+    same = all(r["rays"] == s["rays"] for r in rt) and all(r["rays"] == rp[0]["rays"] for r in rp)
+    print("textured over plain, render phase: %.2fx (wall %.2fx); target %.1fx, %s" %
+          (ratio, med(rt, "wall") / med(rp, "wall"), TEXTURE_TARGET,
+           "met" if ratio <= TEXTURE_TARGET else "missed by %.0f%%" % (100 * (ratio / TEXTURE_TARGET - 1))))
+    print("rays: textured %d, plain %d (bumps bend the reflected and refracted rays: the counts differ a little)%s" %
+          (s["rays"]["total"], rp[0]["rays"]["total"], "" if same else "; the counts varied between runs"))
+    w, h = size
+    texels = w * h * 3 * 4 / 2 ** 20
+    print()
+    print("one image file, %d x %d pixels (%.0f MB as float RGB), mapped by the material of each of n spheres, "
+          "64x48, 1 spp:" % (w, h, texels))
+    print("peak RSS, the median of %d runs: n = 1: %.1f MB, n = %d: %.1f MB, a difference of %.1f MB; %d copies "
+          "would be %.0f MB more" % (runs, mem[1], SHARED_N, mem[SHARED_N], mem[SHARED_N] - mem[1], SHARED_N,
+                                     (SHARED_N - 1) * texels))
+
+
 # ---- the scaling study ----
 
 SCALING_N = [10, 100, 1000, 10000, 100000, 1000000]
@@ -494,9 +590,10 @@ def main():
     ap.add_argument("--quick", action="store_true", help="one run of each, not three")
     ap.add_argument("--runs", type=int, help="runs of each measurement (default 3, --quick 1)")
     ap.add_argument("--full", action="store_true", help="also scn converge examples/whitted.scn (5 minutes)")
-    ap.add_argument("--only", choices=["table", "language", "converge", "scaling", "embree"], action="append",
-                    help="run only these parts (repeatable); default: table, language, scaling and embree, and "
-                         "converge with --full")
+    ap.add_argument("--only", choices=["table", "language", "textures", "converge", "scaling", "embree"],
+                    action="append",
+                    help="run only these parts (repeatable); default: table, language, textures, scaling and "
+                         "embree, and converge with --full")
     ap.add_argument("--scene", action="append", metavar="NAME",
                     help="the table's scenes to run, by the name in its first column (repeatable: "
                          "--scene 'quadrics 1e4' --scene 'csg wall'); default every one")
@@ -505,7 +602,7 @@ def main():
     ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
     a = ap.parse_args()
     runs = a.runs or (1 if a.quick else 3)
-    parts = a.only or ["table", "language", "scaling", "embree"] + (["converge"] if a.full else [])
+    parts = a.only or ["table", "language", "textures", "scaling", "embree"] + (["converge"] if a.full else [])
     os.makedirs(a.work, exist_ok=True)
     subprocess.run(["make", "-s", "-C", TOP, "scn"], check=True, stdout=subprocess.DEVNULL)
     with open("/proc/loadavg") as f:
@@ -523,6 +620,10 @@ def main():
         sys.stdout.flush()
     if "language" in parts:
         print_language(*language(a.work, runs), runs)
+        print()
+        sys.stdout.flush()
+    if "textures" in parts:
+        print_textures(*textures(a.work, runs), runs)
         print()
         sys.stdout.flush()
     if "converge" in parts:

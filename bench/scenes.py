@@ -224,6 +224,90 @@ def macro_tree(path, depth=13, width=640, height=480):
     branches = 2 ** (depth + 1) - 1
     write(path, MACRO_TREE.format(branches=branches, branches_half=2 ** depth, depth=depth, w=width, h=height))
 
+# ---- surfaces (LANGUAGE.md section 11): the headline's spheres dressed in patterns ----
+
+# (name, diffuse, plain twin's colour, the rest of the material); every sphere's diffuse is
+# one of the ten patterns (four with turbulence), a few have bumps, one material in thirteen
+# is an image map; the plain twin has each pattern's middle colour and no normal
+SURFACES = [
+    ("mirror", "pattern {{ granite  colors [[0, 0.02], [1, 0.1]] }}", "0.05",
+     "specular 0.8  shininess 200  reflect 0.85"),
+    ("glass", "pattern {{ bozo  colors [[0, 0], [1, 0.05]] }}", "0",
+     "specular 0.6  shininess 300  reflect 0.08  transmit 0.9  ior 1.5  normal {{ waves 0.1  scale 0.3 }}"),
+    ("grad", "pattern {{ gradient <0, 1, 0>  colors [[0, <0.8, 0.2, 0.15>], [1, <0.9, 0.9, 0.85>]]  scale 0.2 }}",
+     "<0.85, 0.55, 0.5>", "specular 0.3  shininess 40"),
+    ("radial", "pattern {{ radial  frequency 8  colors [[0, <0.9, 0.8, 0.1>], [1, <0.1, 0.4, 0.8>]] }}",
+     "<0.5, 0.6, 0.45>", "specular 0.3  shininess 40"),
+    ("onion", "pattern {{ onion  colors [[0, <0.2, 0.3, 0.8>], [1, <0.9, 0.85, 0.7>]]  scale 0.15 }}",
+     "<0.55, 0.58, 0.75>", "specular 0.3  shininess 40  normal {{ bumps 0.4  scale 0.05 }}"),
+    ("wood", "pattern {{ wood  turbulence 0.05  colors [[0, <0.55, 0.34, 0.16>], [1, <0.3, 0.17, 0.07>]]  scale 0.1 }}",
+     "<0.42, 0.25, 0.11>", "specular 0.2  shininess 30"),
+    ("marble", "pattern {{ marble  turbulence 0.8  colors [[0, <0.9, 0.9, 0.85>], [1, <0.3, 0.3, 0.35>]]  scale 0.3 }}",
+     "<0.6, 0.6, 0.6>", "specular 0.4  shininess 80"),
+    ("leopard", "pattern {{ leopard  colors [[0, <0.85, 0.6, 0.25>], [1, <0.2, 0.12, 0.05>]]  scale 0.05 }}",
+     "<0.52, 0.36, 0.15>", "specular 0.1  shininess 20"),
+    ("agate", "pattern {{ agate  colors [[0, <0.95, 0.9, 0.8>], [1, <0.35, 0.15, 0.15>]]  scale 0.3 }}",
+     "<0.65, 0.52, 0.48>", "specular 0.5  shininess 100  normal {{ dents 0.5  scale 0.05 }}"),
+    ("bozo", "pattern {{ bozo  turbulence 0.3  colors [[0, <0.2, 0.7, 0.25>], [1, <0.8, 0.7, 0.45>]]  scale 0.2 }}",
+     "<0.5, 0.7, 0.35>", "specular 0.3  shininess 40"),
+    ("granite", "pattern {{ granite  colors [[0, <0.75, 0.72, 0.7>], [1, <0.1, 0.1, 0.1>]] }}",
+     "<0.42, 0.41, 0.4>", "specular 0.5  shininess 120  normal {{ wrinkles 0.3  scale 0.1 }}"),
+    ("spotted", "pattern {{ spotted  turbulence 0.2  colors [[0, <0.2, 0.5, 0.3>], [1, <0.9, 0.95, 0.85>]]  scale 0.1 }}",
+     "<0.55, 0.72, 0.58>", "specular 0.3  shininess 40  normal {{ ripples 0.3  scale 0.2 }}"),
+    ("label", 'image {{ "{image}"  map spherical  interpolate bilinear }}', "<0.6, 0.45, 0.3>",
+     "specular 0.3  shininess 40"),
+]
+
+SURFACES_SCENE = """// {what}
+camera {{ location <0, 7, -16>  look_at <0, 0.5, 0>  fov 60  resolution 1280, 1024 }}
+light  {{ position <-10, 14, -8> }}
+light  {{ position <12, 10, -4>  intensity 0.6 }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+samples {{ count 5  pattern jittered }}
+max_depth 8
+material floor {{ diffuse {floor}  reflect 0.1 }}
+{materials}
+plane {{ <0, 1, 0>, 0  material floor }}
+{loops}"""
+
+
+def surfaces(path, image, plain):
+    """The headline's 1000 spheres and floor, every material a pattern (the floor marble), a
+    few with bumps, one in thirteen an image map (image, an absolute path); or, plain, the
+    exact twin: the same spheres and materials with plain colours and no normals."""
+    centre = "<20 * rand(3 * {k}) - 10, 0.3 + 3.5 * rand(3 * {k} + 1), 20 * rand(3 * {k} + 2) - 8>"
+    radius = "0.25 + 0.35 * rand(7 * {k} + 5)"
+    mats = []
+    for name, diffuse, colour, rest in SURFACES:
+        if plain:
+            rest = rest.split("  normal")[0]
+        mats.append("material %s { diffuse %s  %s }" % (name, colour if plain else diffuse.format(image=image),
+                                                         rest.format()))
+    floor = ("<0.7, 0.7, 0.7>" if plain else
+             "pattern { marble  turbulence 0.9  colors [[0, <0.92, 0.9, 0.86>], [0.8, <0.55, 0.55, 0.58>], "
+             "[1, <0.3, 0.3, 0.34>]]  scale 2 }")
+    what = ("plain: the textured scene's twin, every pattern and image a plain colour, no normals" if plain else
+            "textured: 1000 spheres over a marble floor, each material one of the ten patterns (some with "
+            "turbulence, some with bumps) or an image map")
+    write(path, SURFACES_SCENE.format(what=what, floor=floor, materials="\n".join(mats),
+                                      loops=sphere_loops(1000, [m[0] for m in SURFACES], centre, radius)))
+
+
+SHARED_IMAGE = """// {n} sphere(s), each with a material of its own that maps the same image file
+camera {{ location <0, 0, -60>  look_at <0, 0, 0>  fov 60  resolution 64, 48 }}
+light  {{ position <-10, 14, -30> }}
+for i in 0 .. {n} {{
+  sphere {{ <mod(i, 40) - 20, floor(i / 40) - 12, 0>, 0.4
+           material {{ diffuse image {{ "{image}"  map spherical }} }} }}
+}}
+"""
+
+
+def shared_image(path, image, n):
+    """n spheres, each with its own inline material mapping the one image file."""
+    write(path, SHARED_IMAGE.format(n=n, image=image))
+
+
 def bunny(path, ply, example):
     """examples/bunny.scn with its mesh file replaced by ply (an absolute path), and 5 samples
     a pixel rather than 4: POV-Ray's +AM1 +R2 traces 5 camera rays, and none traces 4."""

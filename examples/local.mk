@@ -17,3 +17,5 @@ EXAMPLES += examples/tree.scn
 EXAMPLES += examples/colonnade.scn
 EXAMPLES += examples/orbit.scn
 EXTRA_DIST += examples/tree.png examples/colonnade.png
+EXAMPLES += examples/textures.scn examples/crate-texture.scn
+EXTRA_DIST += examples/textures.png examples/picture.png examples/crate.obj examples/crate.mtl examples/crate.png
