@@ -48,13 +48,11 @@ static const double grad[12][3] = {
  * deviation of 0.135 in [0, 1] against its 0.126), so that twins look alike. */
 #define NOISE_SCALE 0.5
 
-/* The offsets of noise_vector's three components: far apart and off the lattice, so that
- * the components are unrelated and none is fixed at 0 on the integer lattice. */
-static const struct vec3 component_offset[3] = {
-	{ 0.3141592653589793, 0.5772156649015329, 0.1414213562373095 },
-	{ 101.7182818284590, 67.6180339887499, 23.2360679774998 },
-	{ 37.8660254037844, 149.4142135623731, 211.7320508075689 },
-};
+/* noise_vector's second and third components pick their corners' gradients by the hash
+ * of the first mixed once more through perm (with these salts), so that the three share one
+ * lattice walk and fade yet are unrelated. */
+#define VECTOR_SALT_1 0x5a
+#define VECTOR_SALT_2 0xc3
 
 /* The lattice cell of f = floor(x) modulo 256. Every double of magnitude 2^62 or more is a
  * multiple of 1024 (cell 0), and below that the conversion is exact. */
@@ -70,11 +68,11 @@ static inline double fade_slope(double t) { return 30 * t * t * (t - 1) * (t - 1
 
 static inline double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-/* One lattice cube around p: the fractions of p in it and its 8 corners' gradients, corner
- * c at bit 0 = x, bit 1 = y, bit 2 = z. */
+/* One lattice cube around p: the fractions of p in it and its 8 corners' hashes, corner c
+ * at bit 0 = x, bit 1 = y, bit 2 = z. A corner's gradient is grad[hash % 12]. */
 struct cube {
 	double fx, fy, fz;
-	const double *g[8];
+	uint8_t h[8];
 };
 
 static inline void cube_at(struct vec3 p, struct cube *c)
@@ -88,16 +86,29 @@ static inline void cube_at(struct vec3 p, struct cube *c)
 	unsigned h[4] = { perm[(a + y) & 255], perm[(b + y) & 255], perm[(a + y + 1) & 255],
 	                  perm[(b + y + 1) & 255] };
 	for (int i = 0; i < 4; i++) {
-		c->g[i] = grad[perm[(h[i] + z) & 255] % 12];
-		c->g[i + 4] = grad[perm[(h[i] + z + 1) & 255] % 12];
+		c->h[i] = perm[(h[i] + z) & 255];
+		c->h[i + 4] = perm[(h[i] + z + 1) & 255];
 	}
 }
 
-/* The gradient of corner i dotted with p's offset from that corner. */
-static inline double corner_dot(const struct cube *c, int i)
+/* The gradient index of corner hash h for the component that salt names (0: the first). */
+static inline unsigned gradient_of(uint8_t h, unsigned salt)
 {
-	const double *g = c->g[i];
-	return g[0] * (c->fx - (i & 1)) + g[1] * (c->fy - (i >> 1 & 1)) + g[2] * (c->fz - (i >> 2));
+	return (salt ? perm[h ^ salt] : h) % 12;
+}
+
+/* The raw noise of one component: the corners' dots (gradients chosen by salt: 0 for the
+ * first component, else the hash mixed through perm with it) blended by the fades u, v, w.
+ * Written out corner by corner: as a loop, GCC kept the corner number a variable. */
+static inline double blend(const struct cube *c, unsigned salt, double u, double v, double w)
+{
+	double x0 = c->fx, y0 = c->fy, z0 = c->fz, x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
+	const double *g;
+#define DOT(i, x, y, z) (g = grad[gradient_of(c->h[i], salt)], g[0] * (x) + g[1] * (y) + g[2] * (z))
+	double n0 = DOT(0, x0, y0, z0), n1 = DOT(1, x1, y0, z0), n2 = DOT(2, x0, y1, z0), n3 = DOT(3, x1, y1, z0);
+	double n4 = DOT(4, x0, y0, z1), n5 = DOT(5, x1, y0, z1), n6 = DOT(6, x0, y1, z1), n7 = DOT(7, x1, y1, z1);
+#undef DOT
+	return lerp(w, lerp(v, lerp(u, n0, n1), lerp(u, n2, n3)), lerp(v, lerp(u, n4, n5), lerp(u, n6, n7)));
 }
 
 static inline double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
@@ -106,13 +117,7 @@ double noise_value(struct vec3 p)
 {
 	struct cube c;
 	cube_at(p, &c);
-	double u = fade(c.fx), v = fade(c.fy), w = fade(c.fz);
-	double n[8];
-	for (int i = 0; i < 8; i++)
-		n[i] = corner_dot(&c, i);
-	double raw = lerp(w, lerp(v, lerp(u, n[0], n[1]), lerp(u, n[2], n[3])),
-	                     lerp(v, lerp(u, n[4], n[5]), lerp(u, n[6], n[7])));
-	return clamp01(0.5 + NOISE_SCALE * raw);
+	return clamp01(0.5 + NOISE_SCALE * blend(&c, 0, fade(c.fx), fade(c.fy), fade(c.fz)));
 }
 
 /* The derivative of the trilinear blend of the corners' linear functions: the blend's
@@ -122,32 +127,38 @@ struct vec3 noise_gradient(struct vec3 p)
 {
 	struct cube c;
 	cube_at(p, &c);
-	double s[3] = { fade(c.fx), fade(c.fy), fade(c.fz) };
-	double ds[3] = { fade_slope(c.fx), fade_slope(c.fy), fade_slope(c.fz) };
-	double d[3] = { 0, 0, 0 }, raw = 0;
-	for (int i = 0; i < 8; i++) {
-		double wt[3], sign[3];
-		for (int k = 0; k < 3; k++) {
-			bool far = i >> k & 1;
-			wt[k] = far ? s[k] : 1 - s[k];
-			sign[k] = far ? 1 : -1;
-		}
-		double n = corner_dot(&c, i), weight = wt[0] * wt[1] * wt[2];
-		raw += weight * n;
-		d[0] += sign[0] * ds[0] * wt[1] * wt[2] * n + weight * c.g[i][0];
-		d[1] += sign[1] * ds[1] * wt[0] * wt[2] * n + weight * c.g[i][1];
-		d[2] += sign[2] * ds[2] * wt[0] * wt[1] * n + weight * c.g[i][2];
-	}
-	if (fabs(NOISE_SCALE * raw) > 0.5)
+	double x0 = c.fx, y0 = c.fy, z0 = c.fz, x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
+	double u = fade(x0), v = fade(y0), w = fade(z0);
+	const double *g[8];
+	for (int i = 0; i < 8; i++)
+		g[i] = grad[c.h[i] % 12];
+#define DOT(i, x, y, z) (g[i][0] * (x) + g[i][1] * (y) + g[i][2] * (z))
+	double n0 = DOT(0, x0, y0, z0), n1 = DOT(1, x1, y0, z0), n2 = DOT(2, x0, y1, z0), n3 = DOT(3, x1, y1, z0);
+	double n4 = DOT(4, x0, y0, z1), n5 = DOT(5, x1, y0, z1), n6 = DOT(6, x0, y1, z1), n7 = DOT(7, x1, y1, z1);
+#undef DOT
+	double k0 = lerp(u, n0, n1), k1 = lerp(u, n2, n3), k2 = lerp(u, n4, n5), k3 = lerp(u, n6, n7);
+	double l0 = lerp(v, k0, k1), l1 = lerp(v, k2, k3);
+	if (fabs(NOISE_SCALE * lerp(w, l0, l1)) > 0.5)
 		return v3(0, 0, 0);
+	double d[3];
+	for (int k = 0; k < 3; k++)
+		d[k] = lerp(w, lerp(v, lerp(u, g[0][k], g[1][k]), lerp(u, g[2][k], g[3][k])),
+		               lerp(v, lerp(u, g[4][k], g[5][k]), lerp(u, g[6][k], g[7][k])));
+	d[0] += fade_slope(x0) * lerp(w, lerp(v, n1 - n0, n3 - n2), lerp(v, n5 - n4, n7 - n6));
+	d[1] += fade_slope(y0) * lerp(w, k1 - k0, k3 - k2);
+	d[2] += fade_slope(z0) * (l1 - l0);
 	return v3(NOISE_SCALE * d[0], NOISE_SCALE * d[1], NOISE_SCALE * d[2]);
 }
 
+/* Each component 2 n - 1 = 2 NOISE_SCALE raw, clamped as noise_value clamps. */
 struct vec3 noise_vector(struct vec3 p)
 {
-	return v3(2 * noise_value(vadd(p, component_offset[0])) - 1,
-	          2 * noise_value(vadd(p, component_offset[1])) - 1,
-	          2 * noise_value(vadd(p, component_offset[2])) - 1);
+	struct cube c;
+	cube_at(p, &c);
+	double u = fade(c.fx), v = fade(c.fy), w = fade(c.fz);
+	return v3(2 * clamp01(0.5 + NOISE_SCALE * blend(&c, 0, u, v, w)) - 1,
+	          2 * clamp01(0.5 + NOISE_SCALE * blend(&c, VECTOR_SALT_1, u, v, w)) - 1,
+	          2 * clamp01(0.5 + NOISE_SCALE * blend(&c, VECTOR_SALT_2, u, v, w)) - 1);
 }
 
 /* POV-Ray's DTurbulence: octave 1 at weight 1, octave i at frequency lambda^(i-1) and

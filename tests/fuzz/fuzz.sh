@@ -32,7 +32,14 @@ flags="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize
 -std=c11 -Wall -Wextra -ffp-contract=off -pthread -D_XOPEN_SOURCE=700 -DFUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION \
 -I$top_builddir -I$top_srcdir/tests/fuzz $FUZZ_LIB_CFLAGS"
 
-# The libraries, compiled again with the sanitizers and coverage (only what changed).
+# The libraries, compiled again with the sanitizers and coverage (only what changed). A
+# header newer than the last library may change a structure that objects built before it
+# lay out otherwise, and mixed layouts make false findings: then every object is rebuilt.
+if [ -f "$obj/libscn.a" ] &&
+	[ -n "$(find "$top_srcdir/lang" "$top_srcdir/render" "$top_srcdir/src" "$top_builddir/lang" \
+		"$top_builddir/config.h" -name '*.h' -newer "$obj/libscn.a" 2>/dev/null | head -n 1)" ]; then
+	rm -f "$obj"/*.o
+fi
 objs=
 for s in $FUZZ_SOURCES; do
 	case $s in
