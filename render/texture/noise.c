@@ -99,8 +99,10 @@ static inline unsigned gradient_of(uint8_t h, unsigned salt)
 
 /* The raw noise of one component: the corners' dots (gradients chosen by salt: 0 for the
  * first component, else the hash mixed through perm with it) blended by the fades u, v, w.
- * Written out corner by corner: as a loop, GCC kept the corner number a variable. */
-static inline double blend(const struct cube *c, unsigned salt, double u, double v, double w)
+ * Written out corner by corner: as a loop, GCC kept the corner number a variable; and
+ * always inlined, with salt a constant (GCC called it, 14% of a textured scene's time). */
+static inline __attribute__((always_inline)) double blend(const struct cube *c, unsigned salt, double u, double v,
+                                                          double w)
 {
 	double x0 = c->fx, y0 = c->fy, z0 = c->fz, x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
 	const double *g;

