@@ -5,14 +5,17 @@ import os
 import sys
 import struct
 
-HEADLINE = """// headline: 1000 spheres over a checkered floor, a tenth mirror and a tenth glass
-camera {{ location <0, 7, -16>  look_at <0, 0.5, 0>  fov 60  resolution 1280, 1024 }}
+# the headline's camera, lights, sky and settings, which the textured scene shares
+HEADLINE_SETUP = """camera {{ location <0, 7, -16>  look_at <0, 0.5, 0>  fov 60  resolution 1280, 1024 }}
 light  {{ position <-10, 14, -8> }}
 light  {{ position <12, 10, -4>  intensity 0.6 }}
 skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
 samples {{ count 5  pattern jittered }}
 max_depth 8
-material floor  {{ diffuse checker(<0.9, 0.9, 0.9>, <0.25, 0.25, 0.3>, 1)  reflect 0.1 }}
+"""
+
+HEADLINE = """// headline: 1000 spheres over a checkered floor, a tenth mirror and a tenth glass
+{setup}material floor  {{ diffuse checker(<0.9, 0.9, 0.9>, <0.25, 0.25, 0.3>, 1)  reflect 0.1 }}
 material mirror {{ diffuse 0.05  specular 0.8  shininess 200  reflect 0.85 }}
 material glass  {{ diffuse 0  specular 0.6  shininess 300  reflect 0.08  transmit 0.9  ior 1.5 }}
 material red    {{ diffuse <0.8, 0.2, 0.15>  specular 0.3  shininess 40 }}
@@ -54,7 +57,7 @@ def headline(path):
     centre = "<20 * rand(3 * {k}) - 10, 0.3 + 3.5 * rand(3 * {k} + 1), 20 * rand(3 * {k} + 2) - 8>"
     radius = "0.25 + 0.35 * rand(7 * {k} + 5)"
     mats = ["mirror"] + ["glass"] + ["red", "green", "blue", "sand"] * 2
-    write(path, HEADLINE.format(loops=sphere_loops(1000, mats, centre, radius)))
+    write(path, HEADLINE.format(setup=HEADLINE_SETUP.format(), loops=sphere_loops(1000, mats, centre, radius)))
 
 
 def field(path, n, width=640, height=480):
@@ -259,13 +262,7 @@ SURFACES = [
 ]
 
 SURFACES_SCENE = """// {what}
-camera {{ location <0, 7, -16>  look_at <0, 0.5, 0>  fov 60  resolution 1280, 1024 }}
-light  {{ position <-10, 14, -8> }}
-light  {{ position <12, 10, -4>  intensity 0.6 }}
-skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
-samples {{ count 5  pattern jittered }}
-max_depth 8
-material floor {{ diffuse {floor}  reflect 0.1 }}
+{setup}material floor {{ diffuse {floor}  reflect 0.1 }}
 {materials}
 plane {{ <0, 1, 0>, 0  material floor }}
 {loops}"""
@@ -289,7 +286,8 @@ def surfaces(path, image, plain):
     what = ("plain: the textured scene's twin, every pattern and image a plain colour, no normals" if plain else
             "textured: 1000 spheres over a marble floor, each material one of the ten patterns (some with "
             "turbulence, some with bumps) or an image map")
-    write(path, SURFACES_SCENE.format(what=what, floor=floor, materials="\n".join(mats),
+    write(path, SURFACES_SCENE.format(what=what, setup=HEADLINE_SETUP.format(), floor=floor,
+                                      materials="\n".join(mats),
                                       loops=sphere_loops(1000, [m[0] for m in SURFACES], centre, radius)))
 
 

@@ -6,23 +6,16 @@
 #   surface_linear.png   16 x 8, gAMA 1.0 (linear)
 #   surface_g22.png      16 x 8, gAMA 0.45455 alone (a 2.2 power law, not sRGB's curve)
 #   surface_mtl.png       4 x 4, no colour chunk: octa_uv.mtl's map_Kd
-import struct
-import zlib
+import os
+import sys
 
-
-def chunk(kind, data):
-    c = struct.pack('>I', len(data)) + kind + data
-    return c + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
+# the PNG writer of the render tests' images (tests/render/mkimages.py)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'render'))
+from mkimages import png  # noqa: E402
 
 
 def write(name, w, h, texel, gamma=None):
-    rows = b''.join(b'\0' + bytes(v for x in range(w) for v in texel(x, y)) for y in range(h))
-    png = b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 2, 0, 0, 0))
-    if gamma is not None:
-        png += chunk(b'gAMA', struct.pack('>I', gamma))
-    png += chunk(b'IDAT', zlib.compress(rows, 9)) + chunk(b'IEND', b'')
-    with open(name, 'wb') as f:
-        f.write(png)
+    png(name, [[texel(x, y) for x in range(w)] for y in range(h)], gamma)
 
 
 def rainbow(x, y):

@@ -60,6 +60,7 @@ def exr(path, rows):
         f.write(struct.pack("<iI", 20000630, 2) + header + struct.pack("<%dQ" % h, *offsets) + blocks)
 
 
-png("sky_4x2.png", SKY_4X2, 100000)
-png("sky_srgb.png", SKY_SRGB, None)
-exr("sky_2x1.exr", SKY_2X1)
+if __name__ == "__main__":
+    png("sky_4x2.png", SKY_4X2, 100000)
+    png("sky_srgb.png", SKY_SRGB, None)
+    exr("sky_2x1.exr", SKY_2X1)
