@@ -49,9 +49,12 @@ static size_t stack_budget(void)
 bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args, struct call *call)
 {
 	struct ast *def = site->u.call.ref->def;
+	/* a recursion this deep has not ended; with two calls of itself a body, the calls
+	 * after the failing one would double at every level back up: nothing more runs */
 	if (ev->calls == LANG_MAX_CALL_DEPTH) {
 		eval_error_span(ev, site, site->u.call.name_span, "calls nested more than %d deep (does a recursion end?)",
 		                LANG_MAX_CALL_DEPTH);
+		ev->exhausted = true;
 		return false;
 	}
 	/* 256 calls of bodies that nest 1000 deep would outgrow the stack: the depth in
@@ -62,6 +65,7 @@ bool call_begin(struct evaluator *ev, struct ast *site, const struct value *args
 	if (ev->stack_base > here && ev->stack_base - here > ev->stack_budget) {
 		eval_error_span(ev, site, site->u.call.name_span, "calls nested too deep for the stack: each holds "
 		                "deeply nested expressions or blocks");
+		ev->exhausted = true;
 		return false;
 	}
 	call->def = def;

@@ -20,6 +20,12 @@ expect_capped 1 5 "$SCN" check "$work/deep_macro.scn"
 expect_grep "$work/err" "^.*deep_macro.scn:1:37: error: calls nested more than 256 deep"
 expect_count "$work/err" ': error: ' 1
 # 255 nested calls are fine
+# a body that calls itself twice without end: the depth's error stops the evaluation,
+# where going on after the failing call would double the calls at each level back up
+printf 'def m(d) {\n  m(2)\n  m(2)\n}\nm(2)\nsphere { <0, 0, 0>, 1 }\n' >"$work/deep_twice.scn"
+expect_capped 1 5 "$SCN" check "$work/deep_twice.scn"
+expect_grep "$work/err" "^.*deep_twice.scn:2:3: error: calls nested more than 256 deep"
+expect_count "$work/err" ': error: ' 1
 printf 'def m(n) { sphere { <n, 0, 0>, 1 }  if n < 255 { m(n + 1) } }\nm(1)\n' >"$work/deep_ok.scn"
 expect_capped 0 5 "$SCN" check "$work/deep_ok.scn"
 
