@@ -457,7 +457,7 @@ def horizon(work):
     image maps agree with POV-Ray to 2.4e-5, so it is POV-Ray's reference too) of scn at 5
     samples a pixel and of POV-Ray at 5 camera rays a pixel, and scn's own estimate."""
     scene = os.path.join(work, "horizon.scn")
-    write(scene, HORIZON.format(image=os.path.join(TOP, "examples", "crate.png")))
+    scenes.write(scene, HORIZON.format(image=os.path.join(TOP, "examples", "crate.png")))
     ref, mine = os.path.join(work, "horizon-ref.png"), os.path.join(work, "horizon-scn.png")
     log("bench: textures: the horizon's reference, %d samples a pixel" % HORIZON_REFERENCE_SPP)
     subprocess.run([SCN, "render", scene, "-o", ref, "-s", str(HORIZON_REFERENCE_SPP), "--bit-depth", "16", "-q"],

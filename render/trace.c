@@ -121,6 +121,20 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 	return sum;
 }
 
+/* The mirror direction of d about the shading normal n (facing d's origin). A shading
+ * normal that is not the geometric one (interpolated, bumped) can send it below the
+ * surface, whose geometric normal on d's side is raw: POV-Ray's rule (trace.cpp's
+ * reflection fix) mirrors d about raw instead when the ray also lies behind n, and else
+ * reflects it back above the surface across the geometric plane. */
+static struct vec3 mirror_direction(struct vec3 d, struct vec3 n, struct vec3 raw)
+{
+	struct vec3 mirror = vsub(d, vscale(n, 2 * vdot(d, n)));
+	double below = vdot(mirror, raw);
+	if (below >= 0)
+		return mirror;
+	return vdot(mirror, n) < 0 ? vsub(d, vscale(raw, 2 * vdot(d, raw))) : vsub(mirror, vscale(raw, 2 * below));
+}
+
 struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
 {
 	struct hit h = { .t = INFINITY };
@@ -161,22 +175,14 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 	double cos_i = vdot(v, n);
 	if (cos_i > 1)
 		cos_i = 1;
-	struct vec3 mirror = vsub(r->d, vscale(n, 2 * vdot(r->d, n)));
-	/* a shading normal that is not the geometric one (interpolated, bumped) can send the
-	 * mirror ray below the surface: POV-Ray's rule (trace.cpp's reflection fix) mirrors it
-	 * about the geometric normal instead when it also lies behind the shading normal, and
-	 * else reflects it back above the surface across the geometric plane */
 	struct vec3 raw = entering ? sp.ng : vneg(sp.ng);
-	double below = vdot(mirror, raw);
-	if (below < 0)
-		mirror = vdot(mirror, n) < 0 ? vsub(r->d, vscale(raw, 2 * vdot(r->d, raw)))
-		                             : vsub(mirror, vscale(raw, 2 * below));
 	if (any_positive(kt) || m->fresnel) {
 		double eta = entering ? 1 / m->ior : m->ior; /* n_i / n_t */
 		double k = 1 - eta * eta * (1 - cos_i * cos_i);
 		if (k < 0 && any_positive(kt)) {
 			/* total internal reflection: POV-Ray traces the mirror ray with weight 1
 			 * in place of both terms */
+			struct vec3 mirror = mirror_direction(r->d, n, raw);
 			struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 			st->reflection++;
 			return vadd(color, trace_ray(sc, &rr, depth + 1, st));
@@ -194,6 +200,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 		}
 	}
 	if (any_positive(kr)) {
+		struct vec3 mirror = mirror_direction(r->d, n, raw);
 		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		st->reflection++;
 		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, st)));
