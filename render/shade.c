@@ -39,6 +39,8 @@ static struct vec3 hit_uv(const struct scene *sc, const struct surface *srf, con
 		v = w0 * a->v + h->b1 * b->v + h->b2 * c->v;
 		break;
 	}
+	case SHAPE_PLANE:
+		break;
 	default: {
 		/* a solid's leaf, in its canonical space: the unit sphere, or the torus about y */
 		const struct part *p = &g->parts[h->part];
