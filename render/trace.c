@@ -1,7 +1,9 @@
 /* trace.c: the Whitted integrator of LANGUAGE.md ("Shading"): emission, Blinn-Phong
  * from each light through filtered hard shadows, mirror reflection, refraction with
- * POV-Ray's total internal reflection rule and optional Fresnel split, and the sky.
- * A ray is spawned only for a term whose weight is not zero. */
+ * POV-Ray's total internal reflection rule and optional Fresnel split, and the sky; k_d
+ * and the bent shading normal of a textured material come from shade.c. A ray is spawned
+ * only for a term whose weight is not zero, and a texture is looked up only for a material
+ * that has one. */
 #include "trace.h"
 
 #include <math.h>
