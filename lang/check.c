@@ -39,11 +39,22 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 {
 	struct span at = stmt->u.stmt.kw_span;
 	switch (stmt->u.stmt.kw) {
-	case KW_LIGHT:
+	case KW_LIGHT: {
 		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");
 		exclusive(c, seen[KW_POSITION], seen[KW_DIRECTION], "a light has a position or a direction, not both");
+		struct ast *dist = seen[KW_FADE_DISTANCE], *power = seen[KW_FADE_POWER];
+		struct ast *fade = dist && (!power || dist->span.start < power->span.start) ? dist : power;
+		if (fade && seen[KW_DIRECTION])
+			diag_error(c->diag, fade->u.item.name_span, "'%s' applies only to a light with a position: a light "
+			           "with a direction has no distance to fade with", item_name(fade));
+		/* POV-Ray's defaults (fade_distance 0, fade_power 0) turn the fade off, which a
+		 * scene that names one of the two hardly means */
+		else if (!dist != !power)
+			diag_warning(c->diag, fade->u.item.name_span, "'%s' without '%s' does not fade: POV-Ray's %s is 0",
+			             item_name(fade), dist ? "fade_power" : "fade_distance", dist ? "fade_power" : "fade_distance");
 		break;
+	}
 	case KW_SKYBOX: {
 		/* three kinds of sky; one error for the first clash is enough */
 		struct ast *zenith = seen[KW_ZENITH], *horizon = seen[KW_HORIZON];

@@ -23,7 +23,8 @@ static const struct attr_spec camera_attrs[] = {
 };
 static const struct attr_spec light_attrs[] = {
 	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },
-	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false },
+	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false }, { KW_FADE_DISTANCE, S_NUM, false },
+	{ KW_FADE_POWER, S_NUM, false },
 };
 static const struct attr_spec material_attrs[] = {
 	{ KW_LIKE, S_LIKE, false }, { KW_DIFFUSE, S_PIGMENT, false }, { KW_SPECULAR, S_VEC, false },

@@ -72,6 +72,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 static void eval_light(struct evaluator *ev, struct ast *s)
 {
 	struct light_desc l = { .color = { 1, 1, 1 }, .intensity = 1, .span = s->u.stmt.kw_span };
+	char nb[32];
 	struct ast_list *items = &s->u.stmt.block->items;
 	for (size_t i = 0; i < items->n; i++) {
 		struct ast *it = items->v[i];
@@ -85,6 +86,14 @@ static void eval_light(struct evaluator *ev, struct ast *s)
 		case KW_COLOR: vec_of(ev, arg0(it), l.color); break;
 		case KW_INTENSITY: num_of(ev, arg0(it), &l.intensity); break;
 		case KW_SHADOWLESS: l.shadowless = true; break;
+		case KW_FADE_DISTANCE:
+			if (num_of(ev, arg0(it), &l.fade_distance) && !(l.fade_distance > 0))
+				eval_error(ev, arg0(it), "fade_distance must be positive, not %s", value_number_text(l.fade_distance, nb));
+			break;
+		case KW_FADE_POWER:
+			if (num_of(ev, arg0(it), &l.fade_power) && !(l.fade_power >= 0))
+				eval_error(ev, arg0(it), "fade_power must be 0 or more, not %s", value_number_text(l.fade_power, nb));
+			break;
 		}
 	}
 	struct scene_desc *o = ev->out;

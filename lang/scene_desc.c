@@ -389,6 +389,10 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 		field_vec(out, l->directional ? "direction" : "position", l->vec);
 		field_vec(out, "color", l->color);
 		field_num(out, "intensity", l->intensity);
+		if (l->fade_distance > 0 || l->fade_power > 0) {
+			field_num(out, "fade_distance", l->fade_distance);
+			field_num(out, "fade_power", l->fade_power);
+		}
 		fputs(l->shadowless ? " shadowless\n" : "\n", out);
 	}
 	for (size_t i = 0; i < s->nmaterials; i++)

@@ -26,6 +26,8 @@ struct light_desc {
 	double color[3];
 	double intensity;
 	bool shadowless;
+	double fade_distance;          /* POV-Ray's defaults 0 and 0: no fade; it fades only */
+	double fade_power;             /* when both are > 0 (LANGUAGE.md section 12) */
 	struct span span;
 };
 

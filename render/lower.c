@@ -415,6 +415,8 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 		li->to_light = l->directional ? vneg(vunit(v3a(l->vec))) : v3s(0);
 		li->color = vscale(v3a(l->color), l->intensity);
 		li->shadowless = l->shadowless;
+		li->fade_distance = l->fade_distance;
+		li->fade_power = l->fade_distance > 0 ? l->fade_power : 0; /* POV-Ray: no distance, no fade */
 		if (!l->directional)
 			lower_check_extent(&lw, l->span, "this light", lower_extent_of(li->pos));
 	}

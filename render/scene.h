@@ -26,6 +26,8 @@ struct light {
 	struct vec3 to_light;          /* LIGHT_DIRECTIONAL: unit vector against the light's travel */
 	struct vec3 color;             /* colour times intensity */
 	bool shadowless;               /* a fill light: no shadow test, no highlight */
+	double fade_distance;          /* LIGHT_POINT: POV-Ray's 2 / (1 + (d / D)^P), d the */
+	double fade_power;             /* distance to pos; none unless P > 0 and D > 0 */
 };
 
 /* What a material's k_d is: a colour, a checker of two, a pattern through its colour map,

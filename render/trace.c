@@ -94,6 +94,8 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 		if (!(ndotl > 0))
 			continue;
 		struct vec3 color = li->color;
+		if (li->fade_power > 0) /* lower.c keeps it 0 unless fade_distance > 0 */
+			color = vscale(color, 2 / (1 + pow(dist / li->fade_distance, li->fade_power)));
 		if (!li->shadowless) {
 			/* a segment from just off the surface to the light: relative end, so the
 			 * light itself needs no tolerance (NUMERICS.md section 3) */

@@ -622,6 +622,12 @@ static void write_lights(struct pov *p)
 			fputs(" parallel point_at ", f);
 			pov_vec(f, centre);
 		}
+		if (l->fade_power > 0) {
+			fputs(" fade_distance ", f);
+			pov_num(f, l->fade_distance);
+			fputs(" fade_power ", f);
+			pov_num(f, l->fade_power);
+		}
 		if (l->shadowless)
 			fputs(" shadowless", f);
 		fputs(" }\n", f);
