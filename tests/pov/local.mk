@@ -36,6 +36,7 @@ POV_TESTS = \
 	tests/pov/grid9.scn \
 	tests/pov/lights_coloured.scn \
 	tests/pov/lights_directional.scn \
+	tests/pov/lights_fade.scn \
 	tests/pov/lights_shadowless.scn \
 	tests/pov/loops.scn \
 	tests/pov/materials.scn \
