@@ -43,6 +43,9 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");
 		exclusive(c, seen[KW_POSITION], seen[KW_DIRECTION], "a light has a position or a direction, not both");
+		if (seen[KW_SPOTLIGHT] && seen[KW_DIRECTION])
+			diag_error(c->diag, seen[KW_SPOTLIGHT]->u.item.name_span, "'spotlight' applies only to a light with a "
+			           "position: a light with a direction has no point to shine from");
 		struct ast *dist = seen[KW_FADE_DISTANCE], *power = seen[KW_FADE_POWER];
 		struct ast *fade = dist && (!power || dist->span.start < power->span.start) ? dist : power;
 		if (fade && seen[KW_DIRECTION])

@@ -1,6 +1,6 @@
 /* check_block.c: which attributes each block statement takes (camera, light, material,
  * the objects and CSGs, skybox, samples) and each block inside a material (pattern, image,
- * normal), the shape of each attribute's value, and the check of a block against them. */
+ * normal) or a light (spotlight), the shape of each attribute's value, and the check of a block against them. */
 #include "check_internal.h"
 
 #include <stdio.h>
@@ -24,13 +24,17 @@ static const struct attr_spec camera_attrs[] = {
 static const struct attr_spec light_attrs[] = {
 	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },
 	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false }, { KW_FADE_DISTANCE, S_NUM, false },
-	{ KW_FADE_POWER, S_NUM, false },
+	{ KW_FADE_POWER, S_NUM, false }, { KW_SPOTLIGHT, S_BLOCK, false },
+};
+/* and radius, which stays a name that scenes may use: spotlight_item checks it */
+static const struct attr_spec spotlight_attrs[] = {
+	{ KW_POINT_AT, S_VEC, false }, { KW_FALLOFF, S_NUM, false }, { KW_TIGHTNESS, S_NUM, false },
 };
 static const struct attr_spec material_attrs[] = {
 	{ KW_LIKE, S_LIKE, false }, { KW_DIFFUSE, S_PIGMENT, false }, { KW_SPECULAR, S_VEC, false },
 	{ KW_SHININESS, S_NUM, false }, { KW_REFLECT, S_VEC, false }, { KW_TRANSMIT, S_VEC, false },
 	{ KW_IOR, S_NUM, false }, { KW_FRESNEL, S_FLAG, false }, { KW_EMIT, S_VEC, false },
-	{ KW_NORMAL, S_NORMAL, false },
+	{ KW_NORMAL, S_BLOCK, false },
 };
 /* LANGUAGE.md section 11: what modifies a pattern's value, in a diffuse pattern and a normal */
 #define PATTERN_MODIFIERS { KW_FREQUENCY, S_NUM, false }, { KW_PHASE, S_NUM, false }, \
@@ -117,6 +121,7 @@ static const struct block_spec normal_spec = {
 	"normal", normal_attrs, sizeof normal_attrs / sizeof normal_attrs[0], "", NULL, { NULL }, 0, TEX_NORMAL,
 };
 static const struct block_spec image_spec = SPEC("image", image_attrs, "", NULL, NULL);
+static const struct block_spec spotlight_spec = SPEC("spotlight", spotlight_attrs, "", NULL, NULL);
 
 static const struct attr_spec *find_attr(const struct block_spec *spec, int kw)
 {
@@ -230,6 +235,7 @@ static void check_word(struct checker *c, struct ast *id, int kw)
 static const struct block_spec *texture_spec(int kw);
 static void check_texture(struct checker *c, const struct block_spec *spec, struct ast_block *block,
                           struct span kw_span);
+static void check_spotlight(struct checker *c, struct ast_block *block, struct span kw_span);
 
 static void check_item(struct checker *c, struct ast *item, const struct attr_spec *a)
 {
@@ -242,7 +248,7 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 			return;
 		}
 
-	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL && a->shape != S_NORMAL) {
+	if (item->u.item.block && a->shape != S_LIST && a->shape != S_MATERIAL && a->shape != S_BLOCK) {
 		diag_error(c->diag, item->u.item.block->open, "'%s' takes a value, not a block", name);
 		return;
 	}
@@ -315,12 +321,16 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 			check_word(c, item, kw);
 		return;
 	}
-	case S_NORMAL:
+	case S_BLOCK:
 		if (!item->u.item.block) {
-			diag_error(c->diag, args->n ? args->v[0]->span : at, "'normal' takes a block: normal { bumps 0.5 }");
+			diag_error(c->diag, args->n ? args->v[0]->span : at, "'%s' takes a block: %s", name,
+			           item->u.item.kw == KW_SPOTLIGHT ? "spotlight { point_at <0, 0, 0> }" : "normal { bumps 0.5 }");
 			return;
 		}
-		check_texture(c, &normal_spec, item->u.item.block, at);
+		if (item->u.item.kw == KW_SPOTLIGHT)
+			check_spotlight(c, item->u.item.block, at);
+		else
+			check_texture(c, &normal_spec, item->u.item.block, at);
 		return;
 	case S_COLORS: {
 		if (args->n != 1) {
@@ -385,6 +395,12 @@ static bool misplaced(struct checker *c, struct ast *item)
 		return true;
 	case KW_NORMAL:
 		diag_error(c->diag, at, "'normal' goes in a material: material { normal { ... } }");
+		return true;
+	case KW_SPOTLIGHT:
+		diag_error(c->diag, at, "'spotlight' goes in a light: light { position P  spotlight { point_at V } }");
+		return true;
+	case KW_POINT_AT: case KW_FALLOFF: case KW_TIGHTNESS:
+		diag_error(c->diag, at, "'%s' goes in a light's spotlight { ... }", item_name(item));
 		return true;
 	case KW_PATTERN: case KW_IMAGE: /* specular pattern { ... } */
 		if (!item->u.item.block)
@@ -509,6 +525,20 @@ static bool pattern_item(struct checker *c, const struct block_spec *spec, const
 	return false;
 }
 
+/* A spotlight's radius, which is no keyword (scenes name their own radii): recorded as
+ * seen[KW_SPOTLIGHT], which the spotlight block has no other use for. */
+static void spotlight_radius(struct checker *c, struct ast *item, struct ast *seen[KW_COUNT_ALL])
+{
+	static const struct attr_spec number = { 0, S_NUM, false };
+	if (seen[KW_SPOTLIGHT]) {
+		diag_error(c->diag, item->u.item.name_span, "'radius' is given twice in spotlight");
+		diag_note(c->diag, seen[KW_SPOTLIGHT]->u.item.name_span, "first given here");
+		return;
+	}
+	seen[KW_SPOTLIGHT] = item;
+	check_item(c, item, &number);
+}
+
 /* Checks a block's positional arguments and items; records the first item of each
  * attribute in seen[] for the statement's own rules. Returns false when an attribute
  * was unknown: what the block lacks may then be only misspelt. */
@@ -543,6 +573,10 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
 			complete &= pattern_item(c, spec, block, item, seen);
 			continue;
 		}
+		if (!a && spec == &spotlight_spec && strcmp(item_name(item), "radius") == 0) {
+			spotlight_radius(c, item, seen);
+			continue;
+		}
 		if (!a && misplaced(c, item)) {
 			complete = false;
 			continue;
@@ -553,6 +587,8 @@ bool check_block(struct checker *c, const struct block_spec *spec, struct ast_bl
 			suggest_init(&s, item_name(item));
 			for (size_t k = 0; k < spec->nattrs; k++)
 				suggest_consider(&s, kw_name(spec->attrs[k].kw));
+			if (spec == &spotlight_spec)
+				suggest_consider(&s, "radius");
 			const char *hint = s.best ? suggest_text(&s, buf, sizeof buf) : suggest_pov_hint(item_name(item), buf, sizeof buf);
 			diag_error(c->diag, item->u.item.name_span, "unknown attribute '%s' in %s%s", item_name(item),
 			           spec->what, hint ? hint : "");
@@ -664,4 +700,17 @@ static void check_texture(struct checker *c, const struct block_spec *spec, stru
 		pattern_range(spec->patterns, &first, &end, &list);
 		diag_error(c->diag, kw_span, "a %s needs the name of its pattern: %s", spec->what, list);
 	}
+}
+
+/* spotlight { point_at V  radius DEG  falloff DEG  tightness T }, whose keyword is at
+ * kw_span: its attributes, and the axis it cannot do without. */
+static void check_spotlight(struct checker *c, struct ast_block *block, struct span kw_span)
+{
+	if (block->broken) {
+		c->tainted = true;
+		return;
+	}
+	struct ast *seen[KW_COUNT_ALL] = { 0 };
+	if (check_block(c, &spotlight_spec, block, kw_span, seen) && !seen[KW_POINT_AT])
+		diag_error(c->diag, kw_span, "a spotlight needs the point it aims at: spotlight { point_at <0, 0, 0> }");
 }

@@ -66,7 +66,7 @@ enum shape {
 	               * interpolate */
 	S_PIGMENT,    /* a colour, checker(...), pattern { ... } or image { ... } */
 	S_LIST,       /* { V, V, ... } */
-	S_NORMAL,     /* normal { ... } */
+	S_BLOCK,      /* a block of attributes: normal { ... }, spotlight { ... } */
 	S_COLORS,     /* an array of [position, colour] pairs */
 };
 

@@ -69,15 +69,67 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		           "the viewing direction is parallel to the default up <0, 1, 0>; give the camera an 'up'");
 }
 
+/* An angle of spotlight { ... } (item it) into *deg: [0, 180), as a cosine repeats past it. */
+static bool spot_angle(struct evaluator *ev, struct ast *it, double *deg)
+{
+	char nb[32];
+	if (!num_of(ev, arg0(it), deg))
+		return false;
+	if (*deg >= 0 && *deg < 180)
+		return true;
+	eval_error(ev, arg0(it), "a spotlight's %s must be at least 0 and below 180 degrees, not %s",
+	           it->u.item.kw == KW_FALLOFF ? "falloff" : "radius", value_number_text(*deg, nb));
+	return false;
+}
+
+/* spotlight { ... } (item sp) into l, with POV-Ray's defaults: radius 30, falloff 45,
+ * tightness 0. Returns point_at's value node when it evaluated, else NULL. */
+static struct ast *eval_spotlight(struct evaluator *ev, struct ast *sp, struct light_desc *l)
+{
+	char nb[32], nb2[32];
+	struct ast *aim = NULL, *radius = NULL, *falloff = NULL;
+	bool angles = true;
+	l->spot = true;
+	l->radius = 30;
+	l->falloff = 45;
+	struct ast_list *items = &sp->u.item.block->items;
+	for (size_t i = 0; i < items->n; i++) {
+		struct ast *it = items->v[i];
+		switch (it->u.item.kw) {
+		case KW_POINT_AT:
+			if (vec_of(ev, arg0(it), l->point_at))
+				aim = arg0(it);
+			break;
+		case KW_FALLOFF: falloff = it; angles &= spot_angle(ev, it, &l->falloff); break;
+		case KW_TIGHTNESS:
+			if (num_of(ev, arg0(it), &l->tightness) && !(l->tightness >= 0))
+				eval_error(ev, arg0(it), "tightness must be 0 or more, not %s", value_number_text(l->tightness, nb));
+			break;
+		case -1: radius = it; angles &= spot_angle(ev, it, &l->radius); break; /* radius, by name (check_block.c) */
+		}
+	}
+	if (angles && l->falloff < l->radius) {
+		if (falloff)
+			eval_error(ev, arg0(falloff), "a spotlight's falloff must be at least its radius, %s, not %s",
+			           value_number_text(l->radius, nb), value_number_text(l->falloff, nb2));
+		else
+			eval_error(ev, arg0(radius), "a spotlight's radius must be at most its falloff, 45 by default, not %s",
+			           value_number_text(l->radius, nb));
+	}
+	return aim;
+}
+
 static void eval_light(struct evaluator *ev, struct ast *s)
 {
 	struct light_desc l = { .color = { 1, 1, 1 }, .intensity = 1, .span = s->u.stmt.kw_span };
 	char nb[32];
+	struct ast *aim = NULL; /* a spotlight's point_at, evaluated */
+	bool placed = false;    /* the position, evaluated */
 	struct ast_list *items = &s->u.stmt.block->items;
 	for (size_t i = 0; i < items->n; i++) {
 		struct ast *it = items->v[i];
 		switch (it->u.item.kw) {
-		case KW_POSITION: vec_of(ev, arg0(it), l.vec); break;
+		case KW_POSITION: placed = vec_of(ev, arg0(it), l.vec); break;
 		case KW_DIRECTION:
 			l.directional = true;
 			if (vec_of(ev, arg0(it), l.vec) && is_zero(l.vec))
@@ -94,8 +146,11 @@ static void eval_light(struct evaluator *ev, struct ast *s)
 			if (num_of(ev, arg0(it), &l.fade_power) && !(l.fade_power >= 0))
 				eval_error(ev, arg0(it), "fade_power must be 0 or more, not %s", value_number_text(l.fade_power, nb));
 			break;
+		case KW_SPOTLIGHT: aim = eval_spotlight(ev, it, &l); break;
 		}
 	}
+	if (aim && placed && l.point_at[0] == l.vec[0] && l.point_at[1] == l.vec[1] && l.point_at[2] == l.vec[2])
+		eval_error(ev, aim, "point_at is the light's position: the spotlight has no axis");
 	struct scene_desc *o = ev->out;
 	xgrow((void **)&o->lights, &o->cap_lights, o->nlights + 1, sizeof *o->lights);
 	o->lights[o->nlights++] = l;

@@ -21,6 +21,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"pattern", "seed", "target_error", "open", "inverse", "inside_vector",
 	"frequency", "phase", "turbulence", "octaves", "omega", "lambda", "colors", "map",
 	"interpolate", "once", "normal", "uvs", "fade_distance", "fade_power",
+	"spotlight", "point_at", "falloff", "tightness",
 };
 
 enum { TABLE_SIZE = 512 }; /* a power of two, over five times the keyword count */

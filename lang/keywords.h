@@ -1,4 +1,4 @@
-/* keywords.h: the reserved words of the scene language (LANGUAGE.md sections 2, 5, 9, 10 and 11). */
+/* keywords.h: the reserved words of the scene language (LANGUAGE.md sections 2, 5, 9, 10, 11 and 12). */
 #ifndef SCN_KEYWORDS_H
 #define SCN_KEYWORDS_H
 
@@ -22,6 +22,7 @@ enum kw {
 	KW_PATTERN, KW_SEED, KW_TARGET_ERROR, KW_OPEN, KW_INVERSE, KW_INSIDE_VECTOR,
 	KW_FREQUENCY, KW_PHASE, KW_TURBULENCE, KW_OCTAVES, KW_OMEGA, KW_LAMBDA, KW_COLORS, KW_MAP,
 	KW_INTERPOLATE, KW_ONCE, KW_NORMAL, KW_UVS, KW_FADE_DISTANCE, KW_FADE_POWER,
+	KW_SPOTLIGHT, KW_POINT_AT, KW_FALLOFF, KW_TIGHTNESS,
 	KW_COUNT_ALL
 };
 

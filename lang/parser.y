@@ -83,7 +83,7 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle box cylinder cone disc torus: { ARGS ITEMS } */
 %token <kw> CSG_KW "CSG keyword"       /* union merge intersection difference: { MEMBERS ITEMS } */
 %token <kw> PIGMENT_KW "'pattern' or 'image'"  /* right after diffuse: diffuse pattern { ITEMS } */
-%token <kw> NORMAL "'normal'"          /* normal { ITEMS }: apart from ATTR, whose '{' opens a list */
+%token <kw> BLOCK_ATTR "'normal' or 'spotlight'" /* normal { ITEMS }, spotlight { ITEMS }: apart from ATTR, whose '{' opens a list */
 %token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
 %token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
 %token DOTDOT "'..'"
@@ -263,8 +263,8 @@ attr_item:
 |	ATTR list_block                     { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 |	MATERIAL opt_args                   { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
-|	NORMAL opt_args                     { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
-|	NORMAL items_block                  { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
+|	BLOCK_ATTR opt_args                 { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
+|	BLOCK_ATTR items_block              { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 	/* diffuse pattern { ... } or image { "FILE" ... }: diffuse's one argument is an item
 	 * that holds the block; an image's file comes first, as a mesh's does */
 |	ATTR PIGMENT_KW mesh_block          { $$ = ast_item(A, @$, $1, NULL, @1, list1(ctx, ast_item(A, span_join(@2, @3), $2,
@@ -283,7 +283,7 @@ binder:
 |	ARGS_KW                             { $$ = reserved(ctx, @1); }
 |	CSG_KW                              { $$ = reserved(ctx, @1); }
 |	MATERIAL                            { $$ = reserved(ctx, @1); }
-|	NORMAL                              { $$ = reserved(ctx, @1); }
+|	BLOCK_ATTR                          { $$ = reserved(ctx, @1); }
 |	MESH                                { $$ = reserved(ctx, @1); }
 |	SAMPLES                             { $$ = reserved(ctx, @1); }
 |	MAX_DEPTH                           { $$ = reserved(ctx, @1); }
@@ -302,7 +302,7 @@ soup:
 ;
 soup_token:
 	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {} | CSG_KW {}
-|	MATERIAL {} | NORMAL {} | PIGMENT_KW {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
+|	MATERIAL {} | BLOCK_ATTR {} | PIGMENT_KW {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
 |	DOTDOT | BAD | POV_COLOUR | '(' | ')' | '<' | '>' | ',' | '.' | '=' | '+' | '-' | '*' | '/'
 |	IF | ELSE | DEF | AND | OR | NOT | BOOL {} | EQ | NE | LT | GT | LE | GE | '?' | ':' | '[' | ']'
 ;
@@ -484,7 +484,7 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 	case YYSYMBOL_ATTR: return "an attribute";
 	case YYSYMBOL_IDENT: case YYSYMBOL_NAME_VALUE: return value || attribute ? NULL : "a name";
 	case YYSYMBOL_MATERIAL: return attribute ? NULL : "'material'";
-	case YYSYMBOL_NORMAL: return attribute ? NULL : "'normal'";
+	case YYSYMBOL_BLOCK_ATTR: return attribute ? NULL : "'normal' or 'spotlight'";
 	case YYSYMBOL_PIGMENT_KW: return NULL; /* only ever after diffuse, where a value is due */
 	case YYSYMBOL_STRING: return value ? NULL : "a string"; /* a string where a value may stand is rare */
 	case YYSYMBOL_POV_COLOUR: case YYSYMBOL_BAD: return NULL;
@@ -589,7 +589,7 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 		name |= expected[i] == YYSYMBOL_IDENT;
 	}
 	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW
-	            || got == YYSYMBOL_MATERIAL || got == YYSYMBOL_NORMAL || got == YYSYMBOL_PIGMENT_KW
+	            || got == YYSYMBOL_MATERIAL || got == YYSYMBOL_BLOCK_ATTR || got == YYSYMBOL_PIGMENT_KW
 	            || got == YYSYMBOL_MESH || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH || got == YYSYMBOL_LET
 	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN || got == YYSYMBOL_IF
 	            || got == YYSYMBOL_ELSE || got == YYSYMBOL_DEF || got == YYSYMBOL_AND || got == YYSYMBOL_OR

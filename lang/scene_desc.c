@@ -393,6 +393,13 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 			field_num(out, "fade_distance", l->fade_distance);
 			field_num(out, "fade_power", l->fade_power);
 		}
+		if (l->spot) {
+			fputs(" spotlight", out);
+			field_vec(out, "point_at", l->point_at);
+			field_num(out, "radius", l->radius);
+			field_num(out, "falloff", l->falloff);
+			field_num(out, "tightness", l->tightness);
+		}
 		fputs(l->shadowless ? " shadowless\n" : "\n", out);
 	}
 	for (size_t i = 0; i < s->nmaterials; i++)

@@ -28,6 +28,10 @@ struct light_desc {
 	bool shadowless;
 	double fade_distance;          /* POV-Ray's defaults 0 and 0: no fade; it fades only */
 	double fade_power;             /* when both are > 0 (LANGUAGE.md section 12) */
+	bool spot;                     /* spotlight { ... }: the fields below */
+	double point_at[3];
+	double radius, falloff;        /* degrees from the axis, in [0, 180), radius <= falloff */
+	double tightness;
 	struct span span;
 };
 

@@ -417,6 +417,16 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 		li->shadowless = l->shadowless;
 		li->fade_distance = l->fade_distance;
 		li->fade_power = l->fade_distance > 0 ? l->fade_power : 0; /* POV-Ray: no distance, no fade */
+		li->spot = l->spot;
+		if (l->spot) {
+			li->point_at = v3a(l->point_at);
+			li->axis = vunit(vsub(li->point_at, li->pos));
+			li->radius = l->radius;
+			li->falloff = l->falloff;
+			li->cos_radius = cos(l->radius * (M_PI / 180));
+			li->cos_falloff = cos(l->falloff * (M_PI / 180));
+			li->tightness = l->tightness;
+		}
 		if (!l->directional)
 			lower_check_extent(&lw, l->span, "this light", lower_extent_of(li->pos));
 	}

@@ -28,6 +28,11 @@ struct light {
 	bool shadowless;               /* a fill light: no shadow test, no highlight */
 	double fade_distance;          /* LIGHT_POINT: POV-Ray's 2 / (1 + (d / D)^P), d the */
 	double fade_power;             /* distance to pos; none unless P > 0 and D > 0 */
+	bool spot;                     /* LIGHT_POINT: a spotlight, the fields below */
+	struct vec3 point_at;          /* for scn pov */
+	struct vec3 axis;              /* unit vector from pos towards point_at */
+	double radius, falloff;        /* degrees, for scn pov */
+	double cos_radius, cos_falloff, tightness;
 };
 
 /* What a material's k_d is: a colour, a checker of two, a pattern through its colour map,

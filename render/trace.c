@@ -70,6 +70,23 @@ static bool any_positive(struct vec3 v)
 	return v.x > 0 || v.y > 0 || v.z > 0;
 }
 
+/* POV-Ray's spotlight factor (povray-equivalence.md section 15) for unit l from the lit
+ * point towards the light: c^tightness, c the cosine between the axis and -l (0 when
+ * c <= 0), times 1 inside the radius, 0 beyond the falloff, and the smoothstep of the
+ * cosine between them. A radius equal to the falloff is a hard edge. */
+static double spot_factor(const struct light *li, struct vec3 l)
+{
+	double c = -vdot(l, li->axis);
+	if (!(c > 0) || c < li->cos_falloff)
+		return 0;
+	double f = pow(c, li->tightness);
+	if (c < li->cos_radius) {
+		double s = (c - li->cos_falloff) / (li->cos_radius - li->cos_falloff);
+		f *= s * s * (3 - 2 * s);
+	}
+	return f;
+}
+
 /* Direct light at sp from every light, seen along v with facing normal n; the shadow rays
  * start from shadow_from (shape_shadow_point). */
 static struct vec3 direct_light(const struct scene *sc, const struct surface_point *sp,
@@ -94,6 +111,12 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 		if (!(ndotl > 0))
 			continue;
 		struct vec3 color = li->color;
+		if (li->spot) {
+			double f = spot_factor(li, l);
+			if (!(f > 0))
+				continue;
+			color = vscale(color, f);
+		}
 		if (li->fade_power > 0) /* lower.c keeps it 0 unless fade_distance > 0 */
 			color = vscale(color, 2 / (1 + pow(dist / li->fade_distance, li->fade_power)));
 		if (!li->shadowless) {

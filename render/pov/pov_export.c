@@ -622,6 +622,16 @@ static void write_lights(struct pov *p)
 			fputs(" parallel point_at ", f);
 			pov_vec(f, centre);
 		}
+		if (l->spot) {
+			fputs(" spotlight point_at ", f);
+			pov_vec(f, l->point_at);
+			fputs(" radius ", f);
+			pov_num(f, l->radius);
+			fputs(" falloff ", f);
+			pov_num(f, l->falloff);
+			fputs(" tightness ", f);
+			pov_num(f, l->tightness);
+		}
 		if (l->fade_power > 0) {
 			fputs(" fade_distance ", f);
 			pov_num(f, l->fade_distance);

@@ -20,7 +20,8 @@ syn keyword scnAttribute intensity shadowless like diffuse specular shininess re
 syn keyword scnAttribute ior fresnel emit translate rotate scale smooth vertices faces normals
 syn keyword scnAttribute zenith horizon image count pattern seed target_error open inverse
 syn keyword scnAttribute inside_vector frequency phase turbulence octaves omega lambda colors map
-syn keyword scnAttribute interpolate once normal uvs fade_distance fade_power
+syn keyword scnAttribute interpolate once normal uvs fade_distance fade_power spotlight
+syn keyword scnAttribute point_at falloff tightness
 syn keyword scnOperator and or not
 " the builtins are names, and true and false values: a '<' after one compares
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees
