@@ -99,6 +99,9 @@ TESTS += tests/errors/light_typo.scn
 EXTRA_DIST += tests/errors/light_typo.scn tests/errors/light_typo.err
 TESTS += tests/errors/light_fade.scn
 EXTRA_DIST += tests/errors/light_fade.scn tests/errors/light_fade.err
+TESTS += tests/errors/spotlight.scn tests/errors/spotlight_values.scn
+EXTRA_DIST += tests/errors/spotlight.scn tests/errors/spotlight.err tests/errors/spotlight_values.scn \
+	tests/errors/spotlight_values.err
 TESTS += tests/errors/like_not_first.scn
 EXTRA_DIST += tests/errors/like_not_first.scn tests/errors/like_not_first.err
 TESTS += tests/errors/mesh_file_with_lists.scn

@@ -78,7 +78,8 @@ EXTREME_TESTS = \
 	tests/extreme/torus_face_1e-4.scn \
 	tests/extreme/torus_far_1e6.scn \
 	tests/extreme/torus_far_1e9.scn \
-	tests/extreme/fade_extremes.scn
+	tests/extreme/fade_extremes.scn \
+	tests/extreme/spot_hard_edge.scn
 TESTS += $(EXTREME_TESTS) tests/extreme/accel-grid.sh
 EXTREME_EXPECT = \
 	tests/extreme/axis_rays_neg.expect \
@@ -143,7 +144,8 @@ EXTREME_EXPECT = \
 	tests/extreme/torus_far_1e9.expect \
 	tests/extreme/texture_overflow.expect \
 	tests/extreme/texture_extremes.expect \
-	tests/extreme/fade_extremes.expect
+	tests/extreme/fade_extremes.expect \
+	tests/extreme/spot_hard_edge.expect
 EXTREME_REFUSED = tests/extreme/huge_mesh.err tests/extreme/huge_sphere.err tests/extreme/literal_1e400.err \
 	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err
 EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \

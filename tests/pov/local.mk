@@ -38,6 +38,7 @@ POV_TESTS = \
 	tests/pov/lights_directional.scn \
 	tests/pov/lights_fade.scn \
 	tests/pov/lights_shadowless.scn \
+	tests/pov/lights_spotlight.scn \
 	tests/pov/loops.scn \
 	tests/pov/materials.scn \
 	tests/pov/materials_layered.scn \
