@@ -1,6 +1,7 @@
 /* check_block.c: which attributes each block statement takes (camera, light, material,
  * the objects and CSGs, skybox, samples) and each block inside a material (pattern, image,
- * normal) or a light (spotlight), the shape of each attribute's value, and the check of a block against them. */
+ * normal) or a light (spotlight), the shape of each attribute's value, and the check of a
+ * block against them. */
 #include "check_internal.h"
 
 #include <stdio.h>
@@ -26,7 +27,7 @@ static const struct attr_spec light_attrs[] = {
 	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false }, { KW_FADE_DISTANCE, S_NUM, false },
 	{ KW_FADE_POWER, S_NUM, false }, { KW_SPOTLIGHT, S_BLOCK, false },
 };
-/* and radius, which stays a name that scenes may use: spotlight_item checks it */
+/* and radius, which stays a name that scenes may use: spotlight_radius checks it */
 static const struct attr_spec spotlight_attrs[] = {
 	{ KW_POINT_AT, S_VEC, false }, { KW_FALLOFF, S_NUM, false }, { KW_TIGHTNESS, S_NUM, false },
 };

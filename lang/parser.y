@@ -83,7 +83,8 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle box cylinder cone disc torus: { ARGS ITEMS } */
 %token <kw> CSG_KW "CSG keyword"       /* union merge intersection difference: { MEMBERS ITEMS } */
 %token <kw> PIGMENT_KW "'pattern' or 'image'"  /* right after diffuse: diffuse pattern { ITEMS } */
-%token <kw> BLOCK_ATTR "'normal' or 'spotlight'" /* normal { ITEMS }, spotlight { ITEMS }: apart from ATTR, whose '{' opens a list */
+/* normal { ITEMS }, spotlight { ITEMS }: apart from ATTR, whose '{' opens a list */
+%token <kw> BLOCK_ATTR "'normal' or 'spotlight'"
 %token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
 %token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
 %token DOTDOT "'..'"
