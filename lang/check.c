@@ -39,6 +39,16 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 {
 	struct span at = stmt->u.stmt.kw_span;
 	switch (stmt->u.stmt.kw) {
+	case KW_CAMERA:
+		/* LANGUAGE.md 12: the orthographic view's size is its width; it has no angle */
+		if (seen[KW_ORTHOGRAPHIC] && !seen[KW_WIDTH] && complete)
+			diag_error(c->diag, at, "an orthographic camera needs a width (the view's width in scene units)");
+		if (seen[KW_WIDTH] && !seen[KW_ORTHOGRAPHIC])
+			diag_error(c->diag, seen[KW_WIDTH]->u.item.name_span, "'width' applies only to an orthographic camera");
+		if (seen[KW_FOV] && seen[KW_ORTHOGRAPHIC])
+			diag_error(c->diag, seen[KW_FOV]->u.item.name_span,
+			           "an orthographic camera has no fov: its width gives the view");
+		break;
 	case KW_LIGHT:
 		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");

@@ -19,7 +19,8 @@ struct attr_spec {
 
 static const struct attr_spec camera_attrs[] = {
 	{ KW_LOCATION, S_VEC, false }, { KW_LOOK_AT, S_VEC, false }, { KW_UP, S_VEC, false },
-	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false },
+	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false }, { KW_ORTHOGRAPHIC, S_FLAG, false },
+	{ KW_WIDTH, S_NUM, false },
 };
 static const struct attr_spec light_attrs[] = {
 	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },

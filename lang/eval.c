@@ -33,6 +33,11 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 				eval_error(ev, arg0(it), "fov must be between 0 and 180 degrees (both excluded), not %s",
 				           value_number_text(c->fov, nb));
 			break;
+		case KW_ORTHOGRAPHIC: c->orthographic = true; break;
+		case KW_WIDTH:
+			if (num_of(ev, arg0(it), &c->view_width) && !(c->view_width > 0))
+				eval_error(ev, arg0(it), "width must be positive, not %s", value_number_text(c->view_width, nb));
+			break;
 		case KW_RESOLUTION:
 			c->resolution_span = it->span;
 			/* both, so that a bad width does not hide a bad height */

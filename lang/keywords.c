@@ -20,7 +20,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"smooth", "vertices", "faces", "normals", "zenith", "horizon", "image", "count",
 	"pattern", "seed", "target_error", "open", "inverse", "inside_vector",
 	"frequency", "phase", "turbulence", "octaves", "omega", "lambda", "colors", "map",
-	"interpolate", "once", "normal", "uvs",
+	"interpolate", "once", "normal", "uvs", "orthographic", "width",
 };
 
 enum { TABLE_SIZE = 512 }; /* a power of two, over five times the keyword count */

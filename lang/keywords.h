@@ -21,7 +21,7 @@ enum kw {
 	KW_SMOOTH, KW_VERTICES, KW_FACES, KW_NORMALS, KW_ZENITH, KW_HORIZON, KW_IMAGE, KW_COUNT,
 	KW_PATTERN, KW_SEED, KW_TARGET_ERROR, KW_OPEN, KW_INVERSE, KW_INSIDE_VECTOR,
 	KW_FREQUENCY, KW_PHASE, KW_TURBULENCE, KW_OCTAVES, KW_OMEGA, KW_LAMBDA, KW_COLORS, KW_MAP,
-	KW_INTERPOLATE, KW_ONCE, KW_NORMAL, KW_UVS,
+	KW_INTERPOLATE, KW_ONCE, KW_NORMAL, KW_UVS, KW_ORTHOGRAPHIC, KW_WIDTH,
 	KW_COUNT_ALL
 };
 
@@ -34,7 +34,8 @@ static inline bool kw_is_object(int k)
 /* The attributes that take no value. */
 static inline bool kw_is_flag(int k)
 {
-	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE || k == KW_ONCE;
+	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE || k == KW_ONCE ||
+	       k == KW_ORTHOGRAPHIC;
 }
 
 static inline bool kw_is_csg(int k)

@@ -13,7 +13,9 @@
 
 struct camera_desc {
 	double location[3], look_at[3], up[3];
-	double fov;                    /* horizontal, degrees */
+	double fov;                    /* horizontal, degrees; unused when orthographic */
+	bool orthographic;             /* parallel rays across a view view_width wide */
+	double view_width;             /* orthographic: the view's width in scene units */
 	int width, height;
 	bool given;                    /* false: the defaults of LANGUAGE.md */
 	struct span span;

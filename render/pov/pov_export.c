@@ -556,12 +556,23 @@ static void write_camera(struct pov *p)
 	const struct pov_export_options *o = p->opt;
 	FILE *f = p->f;
 	bool given = o->look_at && o->up && o->fov > 0;
-	fputs("camera { perspective location ", f);
+	bool ortho = c->kind == CAMERA_ORTHOGRAPHIC;
+	fputs(ortho ? "camera { orthographic location " : "camera { perspective location ", f);
 	pov_vec(f, c->eye);
 	fputs(" look_at ", f);
 	pov_vec(f, given ? v3a(o->look_at) : vadd(c->eye, c->dir));
 	fputs(" sky ", f);
 	pov_vec(f, given ? v3a(o->up) : c->up);
+	if (ortho) {
+		/* without an angle, POV-Ray's orthographic view spans right and up, whose lengths
+		 * look_at keeps: the view's width, and the height as camera_ray computes it */
+		fputs(" right x*", f);
+		pov_num(f, c->view_width);
+		fputs(" up y*", f);
+		pov_num(f, c->view_width);
+		fprintf(f, "*(%d/%d) }\n", c->height, c->width);
+		return;
+	}
 	fprintf(f, " right x*%d/%d up y angle ", c->width, c->height);
 	pov_num(f, given ? o->fov : 2 * atan(c->tan_half) * (180 / M_PI));
 	fputs(" }\n", f);

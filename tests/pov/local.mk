@@ -12,6 +12,8 @@
 #   sphere { <2, 1, 1>, 1  material { diffuse <0.2, 0.4, 0.9> } }
 POV_TESTS = \
 	tests/pov/camera_default.scn \
+	tests/pov/camera_ortho.scn \
+	tests/pov/camera_ortho_grid.scn \
 	tests/pov/camera_inside_glass.scn \
 	tests/pov/camera_up.scn \
 	tests/pov/camera_wide.scn \

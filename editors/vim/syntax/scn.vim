@@ -21,6 +21,7 @@ syn keyword scnAttribute ior fresnel emit translate rotate scale smooth vertices
 syn keyword scnAttribute zenith horizon image count pattern seed target_error open inverse
 syn keyword scnAttribute inside_vector frequency phase turbulence octaves omega lambda colors map
 syn keyword scnAttribute interpolate once normal uvs
+syn keyword scnAttribute orthographic width
 syn keyword scnOperator and or not
 " the builtins are names, and true and false values: a '<' after one compares
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees
