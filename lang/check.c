@@ -49,6 +49,10 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 			diag_error(c->diag, seen[KW_FOV]->u.item.name_span,
 			           "an orthographic camera has no fov: its width gives the view");
 		break;
+	case KW_FOG:
+		if (!seen[KW_DISTANCE] && complete)
+			diag_error(c->diag, at, "a fog needs a distance");
+		break;
 	case KW_LIGHT:
 		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");
@@ -134,7 +138,7 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 		check_csg(c, s);
 		return;
 	}
-	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH) {
+	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH || kw == KW_FOG) {
 		if (c->def_depth)
 			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a definition: it is one per scene",
 			           kw_name(kw));
@@ -283,7 +287,7 @@ static void unknown_statement(struct checker *c, struct ast *s)
 {
 	static const enum kw statements[] = {
 		KW_LET, KW_INCLUDE, KW_FOR, KW_IF, KW_DEF, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SKYBOX, KW_SAMPLES,
-		KW_MAX_DEPTH,
+		KW_MAX_DEPTH, KW_FOG,
 	};
 	if (c->csg) {
 		unknown_in_csg(c, s);
@@ -384,7 +388,7 @@ static void check_body(struct checker *c, struct ast_list *body, const char *wha
 }
 
 /* The statements a scene has at most one of. */
-static const enum kw once_kws[] = { KW_CAMERA, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH };
+static const enum kw once_kws[] = { KW_CAMERA, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH, KW_FOG };
 #define NONCE (sizeof once_kws / sizeof once_kws[0])
 
 static void check_if(struct checker *c, struct ast *s)

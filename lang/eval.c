@@ -118,6 +118,26 @@ static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source
 	}
 }
 
+static void eval_fog(struct evaluator *ev, struct ast *s)
+{
+	struct fog_desc *f = &ev->out->fog;
+	char nb[32];
+	f->given = true;
+	f->span = s->u.stmt.kw_span;
+	struct ast_list *items = &s->u.stmt.block->items;
+	for (size_t i = 0; i < items->n; i++) {
+		struct ast *it = items->v[i];
+		switch (it->u.item.kw) {
+		case KW_DISTANCE:
+			if (num_of(ev, arg0(it), &f->distance) && !(f->distance > 0))
+				eval_error(ev, arg0(it), "a fog's distance must be positive, not %s",
+				           value_number_text(f->distance, nb));
+			break;
+		case KW_COLOR: vec_of(ev, arg0(it), f->color); break;
+		}
+	}
+}
+
 static void eval_samples(struct evaluator *ev, struct ast *s)
 {
 	struct samples_desc *sd = &ev->out->samples;
@@ -295,6 +315,7 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 		case KW_LIGHT: eval_light(ev, s); break;
 		case KW_SKYBOX: eval_skybox(ev, s, src); break;
 		case KW_SAMPLES: eval_samples(ev, s); break;
+		case KW_FOG: eval_fog(ev, s); break;
 		case KW_MAX_DEPTH:
 			if (whole_of(ev, s->u.stmt.value, 1, LANG_MAX_DEPTH, "max_depth", &depth))
 				ev->out->max_depth = (int)depth;

@@ -12,7 +12,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"plane", "triangle", "mesh", "skybox", "samples", "max_depth",
 	"box", "cylinder", "cone", "disc", "torus",
 	"union", "merge", "intersection", "difference",
-	"if", "else", "def",
+	"if", "else", "def", "fog",
 	"and", "or", "not", "true", "false",
 	"location", "look_at", "up", "fov", "resolution", "position", "direction",
 	"color", "intensity", "shadowless", "like", "diffuse", "specular", "shininess",
@@ -20,7 +20,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"smooth", "vertices", "faces", "normals", "zenith", "horizon", "image", "count",
 	"pattern", "seed", "target_error", "open", "inverse", "inside_vector",
 	"frequency", "phase", "turbulence", "octaves", "omega", "lambda", "colors", "map",
-	"interpolate", "once", "normal", "uvs", "orthographic", "width",
+	"interpolate", "once", "normal", "uvs", "orthographic", "width", "distance",
 };
 
 enum { TABLE_SIZE = 512 }; /* a power of two, over five times the keyword count */

@@ -387,6 +387,12 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 		fputc('\n', out);
 		break;
 	}
+	if (s->fog.given) {
+		fputs("fog", out);
+		field_num(out, "distance", s->fog.distance);
+		field_vec(out, "color", s->fog.color);
+		fputc('\n', out);
+	}
 
 	for (size_t i = 0; i < s->nlights; i++) {
 		const struct light_desc *l = &s->lights[i];

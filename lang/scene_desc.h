@@ -166,6 +166,14 @@ struct skybox_desc {
 	struct span span;
 };
 
+/* LANGUAGE.md 12: POV-Ray's constant fog; its colour is black unless given, as POV-Ray's */
+struct fog_desc {
+	bool given;
+	double distance;               /* > 0: what is this far away shows e^-1 of its colour */
+	double color[3];
+	struct span span;
+};
+
 enum sample_pattern { PATTERN_CENTER, PATTERN_GRID, PATTERN_RANDOM, PATTERN_JITTERED,
                       PATTERN_POISSON, PATTERN_COUNT };
 
@@ -180,6 +188,7 @@ struct samples_desc {
 struct scene_desc {
 	struct camera_desc camera;
 	struct skybox_desc skybox;
+	struct fog_desc fog;
 	struct samples_desc samples;
 	int max_depth;
 	struct light_desc *lights;

@@ -413,6 +413,8 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	}
 	lower_check_extent(&lw, c->span, "the camera",
 	                   fmax(lower_extent_of(v3a(c->location)), lower_extent_of(v3a(c->look_at))) + view);
+	if (desc->fog.given)
+		out->fog = (struct fog){ desc->fog.distance, v3a(desc->fog.color) };
 	out->lights = xcalloc(desc->nlights, sizeof *out->lights);
 	for (size_t i = 0; i < desc->nlights; i++) {
 		const struct light_desc *l = &desc->lights[i];

@@ -3,7 +3,8 @@
  * POV-Ray's total internal reflection rule and optional Fresnel split, and the sky; k_d
  * and the bent shading normal of a textured material come from shade.c. A ray is spawned
  * only for a term whose weight is not zero, and a texture is looked up only for a material
- * that has one. */
+ * that has one. POV-Ray's constant fog, when the scene has one, veils every segment a
+ * followed ray travels through the open. */
 #include "trace.h"
 
 #include <math.h>
@@ -137,14 +138,15 @@ static struct vec3 mirror_direction(struct vec3 d, struct vec3 n, struct vec3 ra
 	return vdot(mirror, n) < 0 ? vsub(d, vscale(raw, 2 * vdot(d, raw))) : vsub(mirror, vscale(raw, 2 * below));
 }
 
-struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
+static struct vec3 trace(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st);
+
+/* The colour leaving the hit h of r towards r's origin; inside as trace's. */
+static struct vec3 shade_hit(const struct scene *sc, const struct ray *r, const struct hit *h, int depth, int inside,
+                             struct ray_stats *st)
 {
-	struct hit h = { .t = INFINITY };
-	if (!accel_intersect(&sc->accel, &sc->geo, r, &h))
-		return trace_sky(&sc->sky, r->d);
 	struct surface_point sp;
-	shape_surface_at(&sc->geo, r, &h, &sp);
-	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, &h)];
+	shape_surface_at(&sc->geo, r, h, &sp);
+	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, h)];
 	const struct material *m = &sc->materials[srf->material];
 
 	/* the shading normal (bumped, if the material says so) turned towards the viewer, the
@@ -161,12 +163,12 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 	struct vec3 color = m->emit;
 	if (sc->nlights) {
 		struct surface_point shadow_from = sp;
-		shape_shadow_point(&sc->geo, &h, back ? -1 : 1, &shadow_from);
+		shape_shadow_point(&sc->geo, h, back ? -1 : 1, &shadow_from);
 		struct vec3 kd = m->diffuse;
 		if (m->pigment != MATERIAL_COLOR) {
 			st->patterns += m->pigment == MATERIAL_PATTERN;
 			st->images += m->pigment == MATERIAL_IMAGE;
-			kd = shade_diffuse(sc, srf, m, &h, &sp);
+			kd = shade_diffuse(sc, srf, m, h, &sp);
 		}
 		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, st));
 	}
@@ -187,7 +189,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 			struct vec3 mirror = mirror_direction(r->d, n, raw);
 			struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 			st->reflection++;
-			return vadd(color, trace_ray(sc, &rr, depth + 1, st));
+			return vadd(color, trace(sc, &rr, depth + 1, inside, st));
 		}
 		if (m->fresnel) {
 			double f = fresnel(1 / eta, cos_i);
@@ -198,14 +200,38 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 			struct vec3 w = vadd(vscale(r->d, eta), vscale(n, eta * cos_i - sqrt(k)));
 			struct ray rt = { ray_offset_origin(&sp, w), vnorm(w) };
 			st->refraction++;
-			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, st)));
+			/* through the surface: into one more solid, or out of one */
+			int next = entering ? inside + 1 : inside > 0 ? inside - 1 : 0;
+			color = vadd(color, vmul(kt, trace(sc, &rt, depth + 1, next, st)));
 		}
 	}
 	if (any_positive(kr)) {
 		struct vec3 mirror = mirror_direction(r->d, n, raw);
 		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		st->reflection++;
-		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, st)));
+		color = vadd(color, vmul(kr, trace(sc, &rr, depth + 1, inside, st)));
 	}
 	return color;
+}
+
+/* The colour seen along r by a ray inside `inside` solids, counted as refraction enters and
+ * leaves them (the camera's rays start outside every one). Fog veils the segment to the hit,
+ * or the whole ray as the fog's colour when it escapes, only outside every solid: POV-Ray's
+ * objects are not hollow. */
+static struct vec3 trace(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st)
+{
+	struct hit h = { .t = INFINITY };
+	bool fog = sc->fog.distance > 0 && inside == 0;
+	if (!accel_intersect(&sc->accel, &sc->geo, r, &h))
+		return fog ? sc->fog.color : trace_sky(&sc->sky, r->d);
+	struct vec3 color = shade_hit(sc, r, &h, depth, inside, st);
+	if (!fog)
+		return color;
+	double k = exp(-h.t / sc->fog.distance);   /* r->d is a unit vector: h.t is the distance */
+	return vadd(vscale(color, k), vscale(sc->fog.color, 1 - k));
+}
+
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
+{
+	return trace(sc, r, depth, 0, st);
 }

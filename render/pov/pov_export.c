@@ -578,6 +578,21 @@ static void write_camera(struct pov *p)
 	fputs(" }\n", f);
 }
 
+/* POV-Ray's constant fog is scn's (povray-equivalence.md 15): e^(-t/D) on the segments of
+ * the rays it follows outside every object (not hollow by default, as scn's solids), the
+ * fog's colour on a ray that escapes, none on shadow rays. */
+static void write_fog(struct pov *p)
+{
+	const struct fog *fog = &p->sc->fog;
+	if (!(fog->distance > 0))
+		return;
+	fputs("fog { fog_type 1 distance ", p->f);
+	pov_num(p->f, fog->distance);
+	fputs(" color rgb ", p->f);
+	pov_vec(p->f, fog->color);
+	fputs(" }\n", p->f);
+}
+
 static void write_sky(struct pov *p)
 {
 	const struct sky *sky = &p->sc->sky;
@@ -824,6 +839,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	write_header(&p);
 	write_camera(&p);
 	write_sky(&p);
+	write_fog(&p);
 	write_lights(&p);
 	/* the materials that members of a one-body solid take without their interior */
 	bool *shared = xcalloc(sc->nmaterials ? sc->nmaterials : 1, sizeof *shared);

@@ -31,6 +31,8 @@ POV_TESTS = \
 	tests/pov/csg_nested.scn \
 	tests/pov/csg_union.scn \
 	tests/pov/emit.scn \
+	tests/pov/fog.scn \
+	tests/pov/fog_depth.scn \
 	tests/pov/fresnel.scn \
 	tests/pov/glass.scn \
 	tests/pov/glass_plane.scn \

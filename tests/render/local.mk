@@ -20,6 +20,7 @@ RENDER_TESTS += tests/render/triangle.scn tests/render/mesh_flat.scn tests/rende
 RENDER_TESTS += tests/render/transforms.scn tests/render/plane_transform.scn
 RENDER_TESTS += tests/render/samples_grid4.scn tests/render/samples_grid16.scn tests/render/samples_jittered.scn tests/render/samples_random.scn tests/render/samples_poisson.scn
 RENDER_TESTS += tests/render/plan_depth1.scn
+RENDER_TESTS += tests/render/fog.scn tests/render/fog_inside.scn
 
 # samples per pixel; see the test's .scn)
 TESTS += $(RENDER_TESTS)

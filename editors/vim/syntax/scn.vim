@@ -13,7 +13,7 @@ endif
 " that sets options lists its words before them (tests/editors/vim.sh reads the words).
 syn keyword scnStatement let include for in camera light material sphere plane triangle mesh
 syn keyword scnStatement skybox samples max_depth box cylinder cone disc torus union merge
-syn keyword scnStatement intersection difference if else
+syn keyword scnStatement intersection difference if else fog
 syn keyword scnStatement def nextgroup=scnDefName skipwhite
 syn keyword scnAttribute location look_at up fov resolution position direction color
 syn keyword scnAttribute intensity shadowless like diffuse specular shininess reflect transmit
@@ -21,7 +21,7 @@ syn keyword scnAttribute ior fresnel emit translate rotate scale smooth vertices
 syn keyword scnAttribute zenith horizon image count pattern seed target_error open inverse
 syn keyword scnAttribute inside_vector frequency phase turbulence octaves omega lambda colors map
 syn keyword scnAttribute interpolate once normal uvs
-syn keyword scnAttribute orthographic width
+syn keyword scnAttribute orthographic width distance
 syn keyword scnOperator and or not
 " the builtins are names, and true and false values: a '<' after one compares
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees
