@@ -138,15 +138,25 @@ static struct vec3 mirror_direction(struct vec3 d, struct vec3 n, struct vec3 ra
 	return vdot(mirror, n) < 0 ? vsub(d, vscale(raw, 2 * vdot(d, raw))) : vsub(mirror, vscale(raw, 2 * below));
 }
 
-static struct vec3 trace(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st);
-
-/* The colour leaving the hit h of r towards r's origin; inside as trace's. */
-static struct vec3 shade_hit(const struct scene *sc, const struct ray *r, const struct hit *h, int depth, int inside,
-                             struct ray_stats *st)
+/* c, seen across t along a ray inside `inside` solids: fogged only outside every one, as
+ * POV-Ray's objects are not hollow. */
+static inline struct vec3 veil(const struct scene *sc, struct vec3 c, double t, int inside)
 {
+	if (!(sc->fog.distance > 0) || inside)
+		return c;
+	double k = exp(-t / sc->fog.distance);   /* rays have unit directions: t is the distance */
+	return vadd(vscale(c, k), vscale(sc->fog.color, 1 - k));
+}
+
+/* inside counts the solids a ray is in, as refraction enters and leaves them, for the fog */
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st)
+{
+	struct hit h = { .t = INFINITY };
+	if (!accel_intersect(&sc->accel, &sc->geo, r, &h)) /* an escaping ray: the fog's colour, when fogged */
+		return sc->fog.distance > 0 && !inside ? sc->fog.color : trace_sky(&sc->sky, r->d);
 	struct surface_point sp;
-	shape_surface_at(&sc->geo, r, h, &sp);
-	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, h)];
+	shape_surface_at(&sc->geo, r, &h, &sp);
+	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, &h)];
 	const struct material *m = &sc->materials[srf->material];
 
 	/* the shading normal (bumped, if the material says so) turned towards the viewer, the
@@ -163,17 +173,17 @@ static struct vec3 shade_hit(const struct scene *sc, const struct ray *r, const 
 	struct vec3 color = m->emit;
 	if (sc->nlights) {
 		struct surface_point shadow_from = sp;
-		shape_shadow_point(&sc->geo, h, back ? -1 : 1, &shadow_from);
+		shape_shadow_point(&sc->geo, &h, back ? -1 : 1, &shadow_from);
 		struct vec3 kd = m->diffuse;
 		if (m->pigment != MATERIAL_COLOR) {
 			st->patterns += m->pigment == MATERIAL_PATTERN;
 			st->images += m->pigment == MATERIAL_IMAGE;
-			kd = shade_diffuse(sc, srf, m, h, &sp);
+			kd = shade_diffuse(sc, srf, m, &h, &sp);
 		}
 		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, st));
 	}
 	if (depth >= sc->max_depth)
-		return color;
+		return veil(sc, color, h.t, inside);
 
 	struct vec3 kr = m->reflect, kt = m->transmit;
 	double cos_i = vdot(v, n);
@@ -189,7 +199,7 @@ static struct vec3 shade_hit(const struct scene *sc, const struct ray *r, const 
 			struct vec3 mirror = mirror_direction(r->d, n, raw);
 			struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 			st->reflection++;
-			return vadd(color, trace(sc, &rr, depth + 1, inside, st));
+			return veil(sc, vadd(color, trace_ray(sc, &rr, depth + 1, inside, st)), h.t, inside);
 		}
 		if (m->fresnel) {
 			double f = fresnel(1 / eta, cos_i);
@@ -202,36 +212,14 @@ static struct vec3 shade_hit(const struct scene *sc, const struct ray *r, const 
 			st->refraction++;
 			/* through the surface: into one more solid, or out of one */
 			int next = entering ? inside + 1 : inside > 0 ? inside - 1 : 0;
-			color = vadd(color, vmul(kt, trace(sc, &rt, depth + 1, next, st)));
+			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, next, st)));
 		}
 	}
 	if (any_positive(kr)) {
 		struct vec3 mirror = mirror_direction(r->d, n, raw);
 		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		st->reflection++;
-		color = vadd(color, vmul(kr, trace(sc, &rr, depth + 1, inside, st)));
+		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, inside, st)));
 	}
-	return color;
-}
-
-/* The colour seen along r by a ray inside `inside` solids, counted as refraction enters and
- * leaves them (the camera's rays start outside every one). Fog veils the segment to the hit,
- * or the whole ray as the fog's colour when it escapes, only outside every solid: POV-Ray's
- * objects are not hollow. */
-static struct vec3 trace(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st)
-{
-	struct hit h = { .t = INFINITY };
-	bool fog = sc->fog.distance > 0 && inside == 0;
-	if (!accel_intersect(&sc->accel, &sc->geo, r, &h))
-		return fog ? sc->fog.color : trace_sky(&sc->sky, r->d);
-	struct vec3 color = shade_hit(sc, r, &h, depth, inside, st);
-	if (!fog)
-		return color;
-	double k = exp(-h.t / sc->fog.distance);   /* r->d is a unit vector: h.t is the distance */
-	return vadd(vscale(color, k), vscale(sc->fog.color, 1 - k));
-}
-
-struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
-{
-	return trace(sc, r, depth, 0, st);
+	return veil(sc, color, h.t, inside);
 }
