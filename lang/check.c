@@ -39,6 +39,20 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 {
 	struct span at = stmt->u.stmt.kw_span;
 	switch (stmt->u.stmt.kw) {
+	case KW_CAMERA:
+		/* LANGUAGE.md 12: the orthographic view's size is its width; it has no angle */
+		if (seen[KW_ORTHOGRAPHIC] && !seen[KW_WIDTH] && complete)
+			diag_error(c->diag, at, "an orthographic camera needs a width (the view's width in scene units)");
+		if (seen[KW_WIDTH] && !seen[KW_ORTHOGRAPHIC])
+			diag_error(c->diag, seen[KW_WIDTH]->u.item.name_span, "'width' applies only to an orthographic camera");
+		if (seen[KW_FOV] && seen[KW_ORTHOGRAPHIC])
+			diag_error(c->diag, seen[KW_FOV]->u.item.name_span,
+			           "an orthographic camera has no fov: its width gives the view");
+		break;
+	case KW_FOG:
+		if (!seen[KW_DISTANCE] && complete)
+			diag_error(c->diag, at, "a fog needs a distance");
+		break;
 	case KW_LIGHT: {
 		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");
@@ -138,7 +152,7 @@ static void check_block_stmt(struct checker *c, struct ast *s)
 		check_csg(c, s);
 		return;
 	}
-	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH) {
+	if (kw == KW_CAMERA || kw == KW_SKYBOX || kw == KW_SAMPLES || kw == KW_MAX_DEPTH || kw == KW_FOG) {
 		if (c->def_depth)
 			diag_error(c->diag, s->u.stmt.kw_span, "'%s' cannot be inside a definition: it is one per scene",
 			           kw_name(kw));
@@ -287,7 +301,7 @@ static void unknown_statement(struct checker *c, struct ast *s)
 {
 	static const enum kw statements[] = {
 		KW_LET, KW_INCLUDE, KW_FOR, KW_IF, KW_DEF, KW_CAMERA, KW_LIGHT, KW_MATERIAL, KW_SKYBOX, KW_SAMPLES,
-		KW_MAX_DEPTH,
+		KW_MAX_DEPTH, KW_FOG,
 	};
 	if (c->csg) {
 		unknown_in_csg(c, s);
@@ -388,7 +402,7 @@ static void check_body(struct checker *c, struct ast_list *body, const char *wha
 }
 
 /* The statements a scene has at most one of. */
-static const enum kw once_kws[] = { KW_CAMERA, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH };
+static const enum kw once_kws[] = { KW_CAMERA, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH, KW_FOG };
 #define NONCE (sizeof once_kws / sizeof once_kws[0])
 
 static void check_if(struct checker *c, struct ast *s)

@@ -1,5 +1,5 @@
 /* check_block.c: which attributes each block statement takes (camera, light, material,
- * the objects and CSGs, skybox, samples) and each block inside a material (pattern, image,
+ * the objects and CSGs, skybox, samples, fog) and each block inside a material (pattern, image,
  * normal) or a light (spotlight), the shape of each attribute's value, and the check of a
  * block against them. */
 #include "check_internal.h"
@@ -20,7 +20,8 @@ struct attr_spec {
 
 static const struct attr_spec camera_attrs[] = {
 	{ KW_LOCATION, S_VEC, false }, { KW_LOOK_AT, S_VEC, false }, { KW_UP, S_VEC, false },
-	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false },
+	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false }, { KW_ORTHOGRAPHIC, S_FLAG, false },
+	{ KW_WIDTH, S_NUM, false },
 };
 static const struct attr_spec light_attrs[] = {
 	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },
@@ -62,6 +63,7 @@ static const struct attr_spec skybox_attrs[] = {
 	{ KW_COLOR, S_VEC, false }, { KW_ZENITH, S_VEC, false }, { KW_HORIZON, S_VEC, false },
 	{ KW_IMAGE, S_STR, false }, { KW_ROTATE, S_NUM, false }, { KW_INTENSITY, S_NUM, false },
 };
+static const struct attr_spec fog_attrs[] = { { KW_DISTANCE, S_NUM, false }, { KW_COLOR, S_VEC, false } };
 static const struct attr_spec samples_attrs[] = {
 	{ KW_COUNT, S_NUM, false }, { KW_PATTERN, S_WORD, false }, { KW_SEED, S_NUM, false },
 	{ KW_TARGET_ERROR, S_NUM, false },
@@ -115,6 +117,7 @@ static const struct block_spec intersection_spec = SPEC("intersection", shape_at
 static const struct block_spec difference_spec = SPEC("difference", shape_attrs, "", NULL, NULL);
 static const struct block_spec skybox_spec = SPEC("skybox", skybox_attrs, "", NULL, NULL);
 static const struct block_spec samples_spec = SPEC("samples", samples_attrs, "", NULL, NULL);
+static const struct block_spec fog_spec = SPEC("fog", fog_attrs, "", NULL, NULL);
 static const struct block_spec pattern_spec = {
 	"pattern", pattern_attrs, sizeof pattern_attrs / sizeof pattern_attrs[0], "", NULL, { NULL }, 0, TEX_PIGMENT,
 };
@@ -632,6 +635,7 @@ const struct block_spec *spec_of(enum kw kw)
 	case KW_DIFFERENCE: return &difference_spec;
 	case KW_SKYBOX: return &skybox_spec;
 	case KW_SAMPLES: return &samples_spec;
+	case KW_FOG: return &fog_spec;
 	default: return NULL;
 	}
 }

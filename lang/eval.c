@@ -33,6 +33,11 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 				eval_error(ev, arg0(it), "fov must be between 0 and 180 degrees (both excluded), not %s",
 				           value_number_text(c->fov, nb));
 			break;
+		case KW_ORTHOGRAPHIC: c->orthographic = true; break;
+		case KW_WIDTH:
+			if (num_of(ev, arg0(it), &c->view_width) && !(c->view_width > 0))
+				eval_error(ev, arg0(it), "width must be positive, not %s", value_number_text(c->view_width, nb));
+			break;
 		case KW_RESOLUTION:
 			c->resolution_span = it->span;
 			/* both, so that a bad width does not hide a bad height */
@@ -173,6 +178,26 @@ static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source
 			break;
 		case KW_ROTATE: num_of(ev, arg0(it), &k->rotate); break;
 		case KW_INTENSITY: num_of(ev, arg0(it), &k->intensity); break;
+		}
+	}
+}
+
+static void eval_fog(struct evaluator *ev, struct ast *s)
+{
+	struct fog_desc *f = &ev->out->fog;
+	char nb[32];
+	f->given = true;
+	f->span = s->u.stmt.kw_span;
+	struct ast_list *items = &s->u.stmt.block->items;
+	for (size_t i = 0; i < items->n; i++) {
+		struct ast *it = items->v[i];
+		switch (it->u.item.kw) {
+		case KW_DISTANCE:
+			if (num_of(ev, arg0(it), &f->distance) && !(f->distance > 0))
+				eval_error(ev, arg0(it), "a fog's distance must be positive, not %s",
+				           value_number_text(f->distance, nb));
+			break;
+		case KW_COLOR: vec_of(ev, arg0(it), f->color); break;
 		}
 	}
 }
@@ -354,6 +379,7 @@ static void eval_stmt(struct evaluator *ev, struct ast *s)
 		case KW_LIGHT: eval_light(ev, s); break;
 		case KW_SKYBOX: eval_skybox(ev, s, src); break;
 		case KW_SAMPLES: eval_samples(ev, s); break;
+		case KW_FOG: eval_fog(ev, s); break;
 		case KW_MAX_DEPTH:
 			if (whole_of(ev, s->u.stmt.value, 1, LANG_MAX_DEPTH, "max_depth", &depth))
 				ev->out->max_depth = (int)depth;

@@ -12,7 +12,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"plane", "triangle", "mesh", "skybox", "samples", "max_depth",
 	"box", "cylinder", "cone", "disc", "torus",
 	"union", "merge", "intersection", "difference",
-	"if", "else", "def",
+	"if", "else", "def", "fog",
 	"and", "or", "not", "true", "false",
 	"location", "look_at", "up", "fov", "resolution", "position", "direction",
 	"color", "intensity", "shadowless", "like", "diffuse", "specular", "shininess",
@@ -22,6 +22,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"frequency", "phase", "turbulence", "octaves", "omega", "lambda", "colors", "map",
 	"interpolate", "once", "normal", "uvs", "fade_distance", "fade_power",
 	"spotlight", "point_at", "falloff", "tightness",
+	"orthographic", "width", "distance",
 };
 
 enum { TABLE_SIZE = 512 }; /* a power of two, over five times the keyword count */

@@ -11,7 +11,7 @@ enum kw {
 	KW_PLANE, KW_TRIANGLE, KW_MESH, KW_SKYBOX, KW_SAMPLES, KW_MAX_DEPTH,
 	KW_BOX, KW_CYLINDER, KW_CONE, KW_DISC, KW_TORUS,
 	KW_UNION, KW_MERGE, KW_INTERSECTION, KW_DIFFERENCE,   /* ORDER CSG: as enum csg_op */
-	KW_IF, KW_ELSE, KW_DEF,
+	KW_IF, KW_ELSE, KW_DEF, KW_FOG,
 	/* operators and constants */
 	KW_AND, KW_OR, KW_NOT, KW_TRUE, KW_FALSE,
 	/* attributes */
@@ -23,6 +23,7 @@ enum kw {
 	KW_FREQUENCY, KW_PHASE, KW_TURBULENCE, KW_OCTAVES, KW_OMEGA, KW_LAMBDA, KW_COLORS, KW_MAP,
 	KW_INTERPOLATE, KW_ONCE, KW_NORMAL, KW_UVS, KW_FADE_DISTANCE, KW_FADE_POWER,
 	KW_SPOTLIGHT, KW_POINT_AT, KW_FALLOFF, KW_TIGHTNESS,
+	KW_ORTHOGRAPHIC, KW_WIDTH, KW_DISTANCE,
 	KW_COUNT_ALL
 };
 
@@ -35,7 +36,8 @@ static inline bool kw_is_object(int k)
 /* The attributes that take no value. */
 static inline bool kw_is_flag(int k)
 {
-	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE || k == KW_ONCE;
+	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE || k == KW_ONCE ||
+	       k == KW_ORTHOGRAPHIC;
 }
 
 static inline bool kw_is_csg(int k)

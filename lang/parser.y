@@ -79,7 +79,7 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <name> NAME_VALUE "name"  /* a name followed by a value: it starts an attribute */
 %token POV_COLOUR "rgb"               /* POV-Ray's rgb, rgbf, ...: reserved for a message */
 %token <kw> ATTR "attribute name"
-%token <kw> ITEMS_KW "statement keyword"   /* camera light skybox: { ITEMS } */
+%token <kw> ITEMS_KW "statement keyword"   /* camera light skybox fog: { ITEMS } */
 %token <kw> ARGS_KW "shape keyword"    /* sphere plane triangle box cylinder cone disc torus: { ARGS ITEMS } */
 %token <kw> CSG_KW "CSG keyword"       /* union merge intersection difference: { MEMBERS ITEMS } */
 %token <kw> PIGMENT_KW "'pattern' or 'image'"  /* right after diffuse: diffuse pattern { ITEMS } */

@@ -349,7 +349,12 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 	field_vec(out, "location", c->location);
 	field_vec(out, "look_at", c->look_at);
 	field_vec(out, "up", c->up);
-	field_num(out, "fov", c->fov);
+	if (c->orthographic) {
+		fputs(" orthographic", out);
+		field_num(out, "width", c->view_width);
+	} else {
+		field_num(out, "fov", c->fov);
+	}
 	fprintf(out, " resolution %d %d%s\n", c->width, c->height, c->given ? "" : " (default)");
 
 	fprintf(out, "max_depth %d\n", s->max_depth);
@@ -381,6 +386,12 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 		field_num(out, "intensity", k->intensity);
 		fputc('\n', out);
 		break;
+	}
+	if (s->fog.given) {
+		fputs("fog", out);
+		field_num(out, "distance", s->fog.distance);
+		field_vec(out, "color", s->fog.color);
+		fputc('\n', out);
 	}
 
 	for (size_t i = 0; i < s->nlights; i++) {

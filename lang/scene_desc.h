@@ -13,7 +13,9 @@
 
 struct camera_desc {
 	double location[3], look_at[3], up[3];
-	double fov;                    /* horizontal, degrees */
+	double fov;                    /* horizontal, degrees; unused when orthographic */
+	bool orthographic;             /* parallel rays across a view view_width wide */
+	double view_width;             /* orthographic: the view's width in scene units */
 	int width, height;
 	bool given;                    /* false: the defaults of LANGUAGE.md */
 	struct span span;
@@ -170,6 +172,14 @@ struct skybox_desc {
 	struct span span;
 };
 
+/* LANGUAGE.md 12: POV-Ray's constant fog; its colour is black unless given, as POV-Ray's */
+struct fog_desc {
+	bool given;
+	double distance;               /* > 0: what is this far away shows e^-1 of its colour */
+	double color[3];
+	struct span span;
+};
+
 enum sample_pattern { PATTERN_CENTER, PATTERN_GRID, PATTERN_RANDOM, PATTERN_JITTERED,
                       PATTERN_POISSON, PATTERN_COUNT };
 
@@ -184,6 +194,7 @@ struct samples_desc {
 struct scene_desc {
 	struct camera_desc camera;
 	struct skybox_desc skybox;
+	struct fog_desc fog;
 	struct samples_desc samples;
 	int max_depth;
 	struct light_desc *lights;

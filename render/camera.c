@@ -7,17 +7,32 @@
 void camera_setup(struct camera *c, struct vec3 eye, struct vec3 look_at, struct vec3 up, double fov,
                   int width, int height)
 {
+	c->kind = CAMERA_PINHOLE;
 	c->eye = eye;
 	c->dir = vunit(vsub(look_at, eye));
 	c->right = vunit(vcross(vunit(up), c->dir));
 	c->up = vcross(c->dir, c->right);
 	c->tan_half = tan(fov * (M_PI / 360));
+	c->view_width = 0;
 	c->width = width;
 	c->height = height;
 }
 
+void camera_set_orthographic(struct camera *c, double view_width)
+{
+	c->kind = CAMERA_ORTHOGRAPHIC;
+	c->view_width = view_width;
+}
+
 struct ray camera_ray(const struct camera *c, double u, double v)
 {
+	if (c->kind == CAMERA_ORTHOGRAPHIC) {
+		/* povray-equivalence.md 15: the origin moves across the view, |right| = width and
+		 * |up| = width H / W; every ray runs along D */
+		double sx = (u - 0.5) * c->view_width;
+		double sy = (0.5 - v) * c->view_width * ((double)c->height / c->width);
+		return (struct ray){ vadd(c->eye, vadd(vscale(c->right, sx), vscale(c->up, sy))), c->dir };
+	}
 	double sx = (2 * u - 1) * c->tan_half;
 	double sy = (1 - 2 * v) * c->tan_half * ((double)c->height / c->width);
 	struct vec3 d = vadd(c->dir, vadd(vscale(c->right, sx), vscale(c->up, sy)));

@@ -405,7 +405,16 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 
 	const struct camera_desc *c = &desc->camera;
 	camera_setup(&out->camera, v3a(c->location), v3a(c->look_at), v3a(c->up), c->fov, c->width, c->height);
-	lower_check_extent(&lw, c->span, "the camera", fmax(lower_extent_of(v3a(c->location)), lower_extent_of(v3a(c->look_at))));
+	/* an orthographic view's rays start up to half its width and height from location */
+	double view = 0;
+	if (c->orthographic) {
+		camera_set_orthographic(&out->camera, c->view_width);
+		view = 0.5 * c->view_width * (1 + (double)c->height / c->width);
+	}
+	lower_check_extent(&lw, c->span, "the camera",
+	                   fmax(lower_extent_of(v3a(c->location)), lower_extent_of(v3a(c->look_at))) + view);
+	if (desc->fog.given)
+		out->fog = (struct fog){ desc->fog.distance, v3a(desc->fog.color) };
 	out->lights = xcalloc(desc->nlights, sizeof *out->lights);
 	for (size_t i = 0; i < desc->nlights; i++) {
 		const struct light_desc *l = &desc->lights[i];

@@ -85,7 +85,7 @@ static struct vec3 pixel_mean(const struct scene *sc, struct sampler *sm, double
 	for (int i = 0; i < sp->count; i++) {
 		struct ray r = sample_ray(&sc->camera, sm, px, py, i, xy[2 * i], xy[2 * i + 1]);
 		(*camera)++;
-		struct vec3 c = trace_ray(sc, &r, 1, st);
+		struct vec3 c = trace_ray(sc, &r, 1, 0, st);
 		if (!isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z)) {
 			st->nonfinite++; /* counted, shown by --stats, and kept out of the image */
 			continue;

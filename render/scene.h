@@ -86,6 +86,12 @@ struct sky {
 	double intensity;
 };
 
+/* POV-Ray's constant fog (LANGUAGE.md 12) on the rays the tracer follows through the open */
+struct fog {
+	double distance;               /* 0: no fog */
+	struct vec3 color;
+};
+
 struct scene {
 	struct camera camera;
 	struct light *lights;
@@ -98,6 +104,7 @@ struct scene {
 	struct mesh_use *mesh_uses;
 	size_t nmesh_uses, nmesh_sources;
 	struct sky sky;
+	struct fog fog;
 	/* textures (texture.h): patterns (colour and bump), their colour maps, image maps, and
 	 * the images those read, each file once */
 	struct pattern *patterns;

@@ -3,7 +3,8 @@
  * POV-Ray's total internal reflection rule and optional Fresnel split, and the sky; k_d
  * and the bent shading normal of a textured material come from shade.c. A ray is spawned
  * only for a term whose weight is not zero, and a texture is looked up only for a material
- * that has one. */
+ * that has one. POV-Ray's constant fog, when the scene has one, veils every segment a
+ * followed ray travels through the open. */
 #include "trace.h"
 
 #include <math.h>
@@ -162,11 +163,22 @@ static struct vec3 mirror_direction(struct vec3 d, struct vec3 n, struct vec3 ra
 	return vdot(mirror, n) < 0 ? vsub(d, vscale(raw, 2 * vdot(d, raw))) : vsub(mirror, vscale(raw, 2 * below));
 }
 
-struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st)
+/* c, seen across t along a ray inside `inside` solids: fogged only outside every one, as
+ * POV-Ray's objects are not hollow. */
+static inline struct vec3 veil(const struct scene *sc, struct vec3 c, double t, int inside)
+{
+	if (!(sc->fog.distance > 0) || inside)
+		return c;
+	double k = exp(-t / sc->fog.distance);   /* rays have unit directions: t is the distance */
+	return vadd(vscale(c, k), vscale(sc->fog.color, 1 - k));
+}
+
+/* inside counts the solids a ray is in, as refraction enters and leaves them, for the fog */
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st)
 {
 	struct hit h = { .t = INFINITY };
-	if (!accel_intersect(&sc->accel, &sc->geo, r, &h))
-		return trace_sky(&sc->sky, r->d);
+	if (!accel_intersect(&sc->accel, &sc->geo, r, &h)) /* an escaping ray: the fog's colour, when fogged */
+		return sc->fog.distance > 0 && !inside ? sc->fog.color : trace_sky(&sc->sky, r->d);
 	struct surface_point sp;
 	shape_surface_at(&sc->geo, r, &h, &sp);
 	const struct surface *srf = &sc->geo.surfaces[shape_surface(&sc->geo, &h)];
@@ -196,7 +208,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, st));
 	}
 	if (depth >= sc->max_depth)
-		return color;
+		return veil(sc, color, h.t, inside);
 
 	struct vec3 kr = m->reflect, kt = m->transmit;
 	double cos_i = vdot(v, n);
@@ -212,7 +224,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 			struct vec3 mirror = mirror_direction(r->d, n, raw);
 			struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 			st->reflection++;
-			return vadd(color, trace_ray(sc, &rr, depth + 1, st));
+			return veil(sc, vadd(color, trace_ray(sc, &rr, depth + 1, inside, st)), h.t, inside);
 		}
 		if (m->fresnel) {
 			double f = fresnel(1 / eta, cos_i);
@@ -223,14 +235,16 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, st
 			struct vec3 w = vadd(vscale(r->d, eta), vscale(n, eta * cos_i - sqrt(k)));
 			struct ray rt = { ray_offset_origin(&sp, w), vnorm(w) };
 			st->refraction++;
-			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, st)));
+			/* through the surface: into one more solid, or out of one */
+			int next = entering ? inside + 1 : inside > 0 ? inside - 1 : 0;
+			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, next, st)));
 		}
 	}
 	if (any_positive(kr)) {
 		struct vec3 mirror = mirror_direction(r->d, n, raw);
 		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		st->reflection++;
-		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, st)));
+		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, inside, st)));
 	}
-	return color;
+	return veil(sc, color, h.t, inside);
 }

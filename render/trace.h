@@ -18,8 +18,9 @@ struct ray_stats {
 };
 
 /* The colour seen along r (unit direction) by a ray of the given depth (a camera ray
- * has depth 1), per LANGUAGE.md's shading model. */
-struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, struct ray_stats *st);
+ * has depth 1) inside `inside` solids (0 for a camera ray: they start outside every one),
+ * per LANGUAGE.md's shading model. */
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st);
 
 /* What a ray that hits nothing sees in direction d (unit). */
 struct vec3 trace_sky(const struct sky *sky, struct vec3 d);

@@ -556,15 +556,41 @@ static void write_camera(struct pov *p)
 	const struct pov_export_options *o = p->opt;
 	FILE *f = p->f;
 	bool given = o->look_at && o->up && o->fov > 0;
-	fputs("camera { perspective location ", f);
+	bool ortho = c->kind == CAMERA_ORTHOGRAPHIC;
+	fputs(ortho ? "camera { orthographic location " : "camera { perspective location ", f);
 	pov_vec(f, c->eye);
 	fputs(" look_at ", f);
 	pov_vec(f, given ? v3a(o->look_at) : vadd(c->eye, c->dir));
 	fputs(" sky ", f);
 	pov_vec(f, given ? v3a(o->up) : c->up);
+	if (ortho) {
+		/* without an angle, POV-Ray's orthographic view spans right and up, whose lengths
+		 * look_at keeps: the view's width, and the height as camera_ray computes it */
+		fputs(" right x*", f);
+		pov_num(f, c->view_width);
+		fputs(" up y*", f);
+		pov_num(f, c->view_width);
+		fprintf(f, "*(%d/%d) }\n", c->height, c->width);
+		return;
+	}
 	fprintf(f, " right x*%d/%d up y angle ", c->width, c->height);
 	pov_num(f, given ? o->fov : 2 * atan(c->tan_half) * (180 / M_PI));
 	fputs(" }\n", f);
+}
+
+/* POV-Ray's constant fog is scn's (povray-equivalence.md 15): e^(-t/D) on the segments of
+ * the rays it follows outside every object (not hollow by default, as scn's solids), the
+ * fog's colour on a ray that escapes, none on shadow rays. */
+static void write_fog(struct pov *p)
+{
+	const struct fog *fog = &p->sc->fog;
+	if (!(fog->distance > 0))
+		return;
+	fputs("fog { fog_type 1 distance ", p->f);
+	pov_num(p->f, fog->distance);
+	fputs(" color rgb ", p->f);
+	pov_vec(p->f, fog->color);
+	fputs(" }\n", p->f);
 }
 
 static void write_sky(struct pov *p)
@@ -829,6 +855,7 @@ static int export_to(const struct scene *sc, const struct pov_export_options *op
 	write_header(&p);
 	write_camera(&p);
 	write_sky(&p);
+	write_fog(&p);
 	write_lights(&p);
 	/* the materials that members of a one-body solid take without their interior */
 	bool *shared = xcalloc(sc->nmaterials ? sc->nmaterials : 1, sizeof *shared);

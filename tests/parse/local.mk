@@ -1,6 +1,10 @@
 # tests/parse/local.mk: the tests of this folder (see tests/run-test).
 TESTS += tests/parse/camera.scn
 EXTRA_DIST += tests/parse/camera.scn tests/parse/camera.dump
+TESTS += tests/parse/camera_ortho.scn
+EXTRA_DIST += tests/parse/camera_ortho.scn tests/parse/camera_ortho.dump
+TESTS += tests/parse/fog.scn
+EXTRA_DIST += tests/parse/fog.scn tests/parse/fog.dump
 TESTS += tests/parse/camera_partial.scn
 EXTRA_DIST += tests/parse/camera_partial.scn tests/parse/camera_partial.dump
 TESTS += tests/parse/comments.scn

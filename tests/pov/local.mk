@@ -12,6 +12,8 @@
 #   sphere { <2, 1, 1>, 1  material { diffuse <0.2, 0.4, 0.9> } }
 POV_TESTS = \
 	tests/pov/camera_default.scn \
+	tests/pov/camera_ortho.scn \
+	tests/pov/camera_ortho_grid.scn \
 	tests/pov/camera_inside_glass.scn \
 	tests/pov/camera_up.scn \
 	tests/pov/camera_wide.scn \
@@ -29,6 +31,8 @@ POV_TESTS = \
 	tests/pov/csg_nested.scn \
 	tests/pov/csg_union.scn \
 	tests/pov/emit.scn \
+	tests/pov/fog.scn \
+	tests/pov/fog_depth.scn \
 	tests/pov/fresnel.scn \
 	tests/pov/glass.scn \
 	tests/pov/glass_plane.scn \

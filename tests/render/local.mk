@@ -15,11 +15,12 @@ RENDER_TESTS += tests/render/fresnel_normal.scn tests/render/fresnel_60.scn test
 RENDER_TESTS += tests/render/pattern_gradient.scn tests/render/pattern_radial.scn tests/render/bump_mirror.scn
 RENDER_TESTS += tests/render/checker.scn tests/render/checker_translate.scn tests/render/checker_scale.scn tests/render/checker_sphere.scn tests/render/checker_bias.scn tests/render/checker_below.scn
 RENDER_TESTS += tests/render/sky_up.scn tests/render/sky_horizon.scn tests/render/sky_mid.scn tests/render/sky_constant.scn tests/render/skybox_png.scn tests/render/skybox_rotate.scn tests/render/skybox_srgb.scn tests/render/skybox_exr.scn
-RENDER_TESTS += tests/render/camera_fov.scn tests/render/default_camera.scn
+RENDER_TESTS += tests/render/camera_fov.scn tests/render/default_camera.scn tests/render/camera_ortho.scn tests/render/camera_ortho_samples.scn
 RENDER_TESTS += tests/render/triangle.scn tests/render/mesh_flat.scn tests/render/mesh_smooth.scn tests/render/mesh_normals.scn tests/render/mesh_transform.scn tests/render/mesh_obj.scn tests/render/mesh_ply.scn
 RENDER_TESTS += tests/render/transforms.scn tests/render/plane_transform.scn
 RENDER_TESTS += tests/render/samples_grid4.scn tests/render/samples_grid16.scn tests/render/samples_jittered.scn tests/render/samples_random.scn tests/render/samples_poisson.scn
 RENDER_TESTS += tests/render/plan_depth1.scn
+RENDER_TESTS += tests/render/fog.scn tests/render/fog_inside.scn
 
 # samples per pixel; see the test's .scn)
 TESTS += $(RENDER_TESTS)

@@ -13,7 +13,7 @@ endif
 " that sets options lists its words before them (tests/editors/vim.sh reads the words).
 syn keyword scnStatement let include for in camera light material sphere plane triangle mesh
 syn keyword scnStatement skybox samples max_depth box cylinder cone disc torus union merge
-syn keyword scnStatement intersection difference if else
+syn keyword scnStatement intersection difference if else fog
 syn keyword scnStatement def nextgroup=scnDefName skipwhite
 syn keyword scnAttribute location look_at up fov resolution position direction color
 syn keyword scnAttribute intensity shadowless like diffuse specular shininess reflect transmit
@@ -22,6 +22,7 @@ syn keyword scnAttribute zenith horizon image count pattern seed target_error op
 syn keyword scnAttribute inside_vector frequency phase turbulence octaves omega lambda colors map
 syn keyword scnAttribute interpolate once normal uvs fade_distance fade_power spotlight
 syn keyword scnAttribute point_at falloff tightness
+syn keyword scnAttribute orthographic width distance
 syn keyword scnOperator and or not
 " the builtins are names, and true and false values: a '<' after one compares
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees
