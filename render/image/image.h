@@ -16,6 +16,8 @@ struct image_source {
 	enum image_format format;
 	double png_gamma;              /* PNG: the power law of its gAMA chunk; 0: the sRGB curve */
 	bool exr_not_half;             /* OpenEXR: a channel stored as 32-bit float or integer */
+	bool embedded;                 /* read from memory (a mesh file's own texture): no file of
+	                                * its own for another program to read */
 };
 
 /* Linear RGB, row 0 at the top, pixel (x, y) at rgb[3 * (y * width + x)]. */

@@ -306,6 +306,8 @@ int image_read_png_memory(const unsigned char *data, size_t size, const char *na
 	if (rc != 0) {
 		image_free(*out);
 		*out = NULL;
+	} else {
+		(*out)->source.embedded = true;
 	}
 	return rc;
 }

@@ -173,22 +173,29 @@ static void listed_interior(struct pov *p, const uint32_t *list, size_t n)
 	fputc('\n', p->f);
 }
 
+/* Triangles [first, last) as "mesh2 { ..." (pov_mesh2_body, own as there) with what their
+ * materials need: UVs, and with listed the texture_list and its interior. */
+static void write_mesh2_body(struct pov *p, size_t first, size_t last, const struct mesh_use *own, bool listed)
+{
+	uint32_t *list;
+	struct pov_mesh2_extra x = mesh2_extra(p, first, last, listed, &list);
+	pov_mesh2_body(p->f, p->sc, p->sc->geo.triangles, first, last, own, &x);
+	if (listed)
+		listed_interior(p, list, x.ntextures);
+	free(list);
+}
+
 /* Triangles [first, last), of one surface or (listed) a mesh file object's with its own
  * materials, as a mesh2 in world space. */
 static void write_mesh2(struct pov *p, size_t first, size_t last, bool listed)
 {
-	uint32_t *list;
-	struct pov_mesh2_extra x = mesh2_extra(p, first, last, listed, &list);
-	pov_mesh2_body(p->f, p->sc, p->sc->geo.triangles, first, last, NULL, &x);
-	if (listed) {
-		listed_interior(p, list, x.ntextures);
-	} else {
+	write_mesh2_body(p, first, last, NULL, listed);
+	if (!listed) {
 		fputs("  ", p->f);
 		pov_material_ref(p->f, p->sc, p->sc->geo.triangles[first].surface, false);
 		fputc('\n', p->f);
 	}
 	fputs("}\n", p->f);
-	free(list);
 }
 
 /* Triangles [first, last), the mesh file object of mesh use u, placed by its transform
@@ -202,13 +209,8 @@ static void write_placed(struct pov *p, size_t first, size_t last, int32_t u)
 	if (p->shares[u] == u) {
 		fprintf(f, "// scn_mesh_%u: a mesh file that several objects use, in its own coordinates;"
 		           " each object { } places it\n#declare scn_mesh_%u = ", (unsigned)use->mesh, (unsigned)use->mesh);
-		uint32_t *list;
-		struct pov_mesh2_extra x = mesh2_extra(p, first, last, listed, &list);
-		pov_mesh2_body(f, p->sc, p->sc->geo.triangles, first, last, use, &x);
-		if (listed)
-			listed_interior(p, list, x.ntextures);
+		write_mesh2_body(p, first, last, use, listed);
 		fputs("}\n", f);
-		free(list);
 	}
 	fprintf(f, "object { scn_mesh_%u ", (unsigned)use->mesh);
 	pov_matrix(f, &use->to_world);
@@ -781,8 +783,7 @@ static bool write_turned_uv_sphere(struct pov *p, const struct sphere *s)
 {
 	const struct scene *sc = p->sc;
 	const struct surface *srf = &sc->geo.surfaces[s->surface];
-	const struct material *m = &sc->materials[srf->material];
-	if (srf->to_object < 0 || m->pigment != MATERIAL_IMAGE || sc->image_maps[m->texture].map != TEXTURE_MAP_UV)
+	if (srf->to_object < 0 || !uv_mapped(sc, s->surface))
 		return false;
 	/* to_object's linear part is R^-1 / s for a rotation (or mirror) R and a scale s */
 	const struct affine *to = &sc->affines[srf->to_object];

@@ -5,8 +5,6 @@
 #include "pov_material.h"
 
 #include <stdbool.h>
-#include <string.h>
-#include <unistd.h>
 
 #include "pov_texture.h"
 #include "pov_write.h"
@@ -62,23 +60,12 @@ struct pov_material_context {
 	const char *pov_dir;
 };
 
-/* Whether m's image map is a texture embedded in a mesh file (a glb's): it has no file of
- * its own for POV-Ray to read, only lowering's name for it, "MESHFILE#TEXTURE"; the twin
- * shows the material's plain diffuse colour instead. */
-static bool embedded_image(const struct scene *sc, const struct material *m)
-{
-	const struct image *img = sc->image_maps[m->texture].image;
-	size_t file = 0;
-	while (sc->images[file] != img)
-		file++;
-	const char *path = sc->image_paths[file];
-	return strchr(path, '#') && access(path, R_OK) != 0;
-}
-
 /* Whether m's pigment is an image map that the twin writes as one. */
 static bool image_pigment(const struct scene *sc, const struct material *m)
 {
-	return m->pigment == MATERIAL_IMAGE && !embedded_image(sc, m);
+	/* a texture embedded in a mesh file (a glb's) has no file of its own for POV-Ray to
+	 * read: the twin shows the material's plain diffuse colour instead */
+	return m->pigment == MATERIAL_IMAGE && !sc->image_maps[m->texture].image->source.embedded;
 }
 
 /* A pigment of diffuse colours divided by div, with transmit t: plain, checker, a pattern

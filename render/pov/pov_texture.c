@@ -103,16 +103,21 @@ void pov_image_file(FILE *f, const struct image_source *src, const char *path, c
 	}
 }
 
-void pov_image_pigment(FILE *f, const struct scene *sc, const struct image_map *im, double t, const char *pov_dir)
+const char *pov_image_path(const struct scene *sc, const struct image *img)
 {
 	size_t file = 0;
-	while (sc->images[file] != im->image)
+	while (sc->images[file] != img)
 		file++;
+	return sc->image_paths[file];
+}
+
+void pov_image_pigment(FILE *f, const struct scene *sc, const struct image_map *im, double t, const char *pov_dir)
+{
 	/* map_type 0, 1, 2, and uv_mapping, which looks the image up as a planar map at (u, v) */
 	static const int map_types[] = { [TEXTURE_MAP_PLANAR] = 0, [TEXTURE_MAP_SPHERICAL] = 1,
 	                                 [TEXTURE_MAP_CYLINDRICAL] = 2, [TEXTURE_MAP_UV] = 0 };
 	fprintf(f, "pigment { %simage_map { ", im->map == TEXTURE_MAP_UV ? "uv_mapping " : "");
-	pov_image_file(f, &im->image->source, sc->image_paths[file], pov_dir);
+	pov_image_file(f, &im->image->source, pov_image_path(sc, im->image), pov_dir);
 	/* without interpolate, POV-Ray takes the nearest texel */
 	fprintf(f, " map_type %d%s%s", map_types[im->map], im->bilinear ? " interpolate 2" : "", im->once ? " once" : "");
 	if (t != 0) {

@@ -14,6 +14,8 @@ void pov_pattern_pigment(FILE *f, const struct pattern *pt, double div, double t
  * are not divided: the finish's diffuse does that). The image file named relative to
  * pov_dir as pov_image_reference does. */
 void pov_image_pigment(FILE *f, const struct scene *sc, const struct image_map *im, double t, const char *pov_dir);
+/* The file image img of sc was read from (as lowering named it). */
+const char *pov_image_path(const struct scene *sc, const struct image *img);
 /* " normal { ... }" of bump pattern pt. */
 void pov_bump_normal(FILE *f, const struct pattern *pt);
 /* The path of an image file as the .pov must name it: relative to pov_dir when both
