@@ -35,8 +35,7 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 			break;
 		case KW_ORTHOGRAPHIC: c->orthographic = true; break;
 		case KW_WIDTH:
-			if (num_of(ev, arg0(it), &c->view_width) && !(c->view_width > 0))
-				eval_error(ev, arg0(it), "width must be positive, not %s", value_number_text(c->view_width, nb));
+			positive_of(ev, arg0(it), "width", false, &c->view_width);
 			break;
 		case KW_RESOLUTION:
 			c->resolution_span = it->span;
@@ -106,10 +105,7 @@ static struct ast *eval_spotlight(struct evaluator *ev, struct ast *sp, struct l
 				aim = arg0(it);
 			break;
 		case KW_FALLOFF: falloff = it; angles &= spot_angle(ev, it, &l->falloff); break;
-		case KW_TIGHTNESS:
-			if (num_of(ev, arg0(it), &l->tightness) && !(l->tightness >= 0))
-				eval_error(ev, arg0(it), "tightness must be 0 or more, not %s", value_number_text(l->tightness, nb));
-			break;
+		case KW_TIGHTNESS: positive_of(ev, arg0(it), "tightness", true, &l->tightness); break;
 		case -1: radius = it; angles &= spot_angle(ev, it, &l->radius); break; /* radius, by name (check_block.c) */
 		}
 	}
@@ -127,7 +123,6 @@ static struct ast *eval_spotlight(struct evaluator *ev, struct ast *sp, struct l
 static void eval_light(struct evaluator *ev, struct ast *s)
 {
 	struct light_desc l = { .color = { 1, 1, 1 }, .intensity = 1, .span = s->u.stmt.kw_span };
-	char nb[32];
 	struct ast *aim = NULL; /* a spotlight's point_at, evaluated */
 	bool placed = false;    /* the position, evaluated */
 	struct ast_list *items = &s->u.stmt.block->items;
@@ -144,12 +139,10 @@ static void eval_light(struct evaluator *ev, struct ast *s)
 		case KW_INTENSITY: num_of(ev, arg0(it), &l.intensity); break;
 		case KW_SHADOWLESS: l.shadowless = true; break;
 		case KW_FADE_DISTANCE:
-			if (num_of(ev, arg0(it), &l.fade_distance) && !(l.fade_distance > 0))
-				eval_error(ev, arg0(it), "fade_distance must be positive, not %s", value_number_text(l.fade_distance, nb));
+			positive_of(ev, arg0(it), "fade_distance", false, &l.fade_distance);
 			break;
 		case KW_FADE_POWER:
-			if (num_of(ev, arg0(it), &l.fade_power) && !(l.fade_power >= 0))
-				eval_error(ev, arg0(it), "fade_power must be 0 or more, not %s", value_number_text(l.fade_power, nb));
+			positive_of(ev, arg0(it), "fade_power", true, &l.fade_power);
 			break;
 		case KW_SPOTLIGHT: aim = eval_spotlight(ev, it, &l); break;
 		}
@@ -185,18 +178,13 @@ static void eval_skybox(struct evaluator *ev, struct ast *s, const struct source
 static void eval_fog(struct evaluator *ev, struct ast *s)
 {
 	struct fog_desc *f = &ev->out->fog;
-	char nb[32];
 	f->given = true;
 	f->span = s->u.stmt.kw_span;
 	struct ast_list *items = &s->u.stmt.block->items;
 	for (size_t i = 0; i < items->n; i++) {
 		struct ast *it = items->v[i];
 		switch (it->u.item.kw) {
-		case KW_DISTANCE:
-			if (num_of(ev, arg0(it), &f->distance) && !(f->distance > 0))
-				eval_error(ev, arg0(it), "a fog's distance must be positive, not %s",
-				           value_number_text(f->distance, nb));
-			break;
+		case KW_DISTANCE: positive_of(ev, arg0(it), "a fog's distance", false, &f->distance); break;
 		case KW_COLOR: vec_of(ev, arg0(it), f->color); break;
 		}
 	}
@@ -207,7 +195,6 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 	struct samples_desc *sd = &ev->out->samples;
 	struct ast *count_at = s->u.stmt.value, *pattern_at = NULL, *target_at = NULL;
 	double x;
-	char nb[32];
 	if (count_at && whole_of(ev, count_at, 1, 65536, "the sample count", &x))
 		sd->count = (int)x;
 	struct ast_list *items = s->u.stmt.block ? &s->u.stmt.block->items : NULL;
@@ -230,8 +217,7 @@ static void eval_samples(struct evaluator *ev, struct ast *s)
 			break;
 		case KW_TARGET_ERROR:
 			target_at = arg0(it);
-			if (num_of(ev, arg0(it), &sd->target_error) && !(sd->target_error > 0))
-				eval_error(ev, arg0(it), "target_error must be positive, not %s", value_number_text(sd->target_error, nb));
+			positive_of(ev, arg0(it), "target_error", false, &sd->target_error);
 			break;
 		}
 	}

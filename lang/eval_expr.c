@@ -494,6 +494,17 @@ bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const c
 	return true;
 }
 
+bool positive_of(struct evaluator *ev, struct ast *e, const char *what, bool zero, double *out)
+{
+	if (!num_of(ev, e, out))
+		return false;
+	if (zero ? *out >= 0 : *out > 0)
+		return true;
+	char nb[32];
+	eval_error(ev, e, "%s must be %s, not %s", what, zero ? "0 or more" : "positive", value_number_text(*out, nb));
+	return false;
+}
+
 bool file_of(struct evaluator *ev, struct ast *e, const struct source *src, const char *what, char **name,
              char **path)
 {

@@ -150,6 +150,9 @@ bool material_of(struct evaluator *ev, struct ast *e, int *out);
 bool file_of(struct evaluator *ev, struct ast *e, const struct source *src, const char *what, char **name,
              char **path);
 bool whole_of(struct evaluator *ev, struct ast *e, double lo, double hi, const char *what, double *out);
+/* num_of for a value that must be positive, or with zero 0 or more: else an error at e,
+ * "WHAT must be positive, not V" ("must be 0 or more"), and false. */
+bool positive_of(struct evaluator *ev, struct ast *e, const char *what, bool zero, double *out);
 
 /* ---- eval_call.c ---- */
 

@@ -66,8 +66,7 @@ int eval_material(struct evaluator *ev, struct ast_block *block, const char *nam
 		case KW_REFLECT: vec_of(ev, arg0(it), m.reflect); break;
 		case KW_TRANSMIT: vec_of(ev, arg0(it), m.transmit); break;
 		case KW_IOR:
-			if (num_of(ev, arg0(it), &m.ior) && !(m.ior > 0))
-				eval_error(ev, arg0(it), "ior must be positive, not %s", value_number_text(m.ior, nb));
+			positive_of(ev, arg0(it), "ior", false, &m.ior);
 			break;
 		case KW_FRESNEL: m.fresnel = true; break;
 		case KW_EMIT: vec_of(ev, arg0(it), m.emit); break;
