@@ -151,6 +151,7 @@ static void print_stats(const struct imgdiff_stats *s, const struct image *b_ful
 		       downsample);
 	printf("\nrmse %.6g (psnr %.2f dB)\n", s->rmse, s->psnr);
 	printf("mean %.6g\n", s->mean);
+	printf("bias %.6g\n", s->bias);
 	printf("max %.6g", s->max);
 	if (s->max > 0)
 		printf(" at (%d, %d)", s->max_x, s->max_y);

@@ -72,6 +72,8 @@ static const struct command commands[] = {
 	  "  size WxH\n"
 	  "  rmse R (psnr P dB)       root mean square channel error; psnr = 20 log10(1/R), inf if R = 0\n"
 	  "  mean M                   mean absolute channel error\n"
+	  "  bias B                   mean signed channel error A - B: one image brighter than the\n"
+	  "                           other, where noise alone averages out\n"
 	  "  max E at (X, Y)          largest channel error and its first pixel, row 0 at the top\n"
 	  "                           (without 'at' when E is 0)\n"
 	  "  off>1/255 S% (N pixels)  pixels with a channel off by more than 1/255\n"

@@ -20,10 +20,10 @@ bool imgdiff_compare(const struct image *a, const struct image *b, struct imgdif
 		return false;
 	*out = (struct imgdiff_stats){ .width = a->width, .height = a->height };
 	const double off1 = 1.0 / 255 + IMGDIFF_OFF_SLACK, off2 = 2.0 / 255 + IMGDIFF_OFF_SLACK;
-	double sum = 0, sum2 = 0;
+	double sum = 0, sum2 = 0, signed_sum = 0;
 	for (int y = 0; y < a->height; y++) {
 		/* sums per row, then over rows: less rounding than one running sum of 10^8 terms */
-		double row = 0, row2 = 0;
+		double row = 0, row2 = 0, row_signed = 0;
 		size_t base = (size_t)y * (size_t)a->width * 3;
 		for (int x = 0; x < a->width; x++) {
 			double worst = 0;
@@ -32,6 +32,9 @@ bool imgdiff_compare(const struct image *a, const struct image *b, struct imgdif
 				double d = channel_error(a->rgb[i], b->rgb[i]);
 				row += d;
 				row2 += d * d;
+				double sd = (double)a->rgb[i] - (double)b->rgb[i];
+				if (isfinite(sd))
+					row_signed += sd;
 				if (d > worst)
 					worst = d;
 			}
@@ -45,10 +48,12 @@ bool imgdiff_compare(const struct image *a, const struct image *b, struct imgdif
 		}
 		sum += row;
 		sum2 += row2;
+		signed_sum += row_signed;
 	}
 	out->pixels = (int64_t)a->width * a->height;
 	double n = 3.0 * (double)out->pixels;
 	out->mean = sum / n;
+	out->bias = signed_sum / n;
 	out->rmse = sqrt(sum2 / n);
 	out->psnr = out->rmse > 0 ? 20 * log10(1 / out->rmse) : INFINITY;
 	return true;

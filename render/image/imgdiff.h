@@ -20,6 +20,8 @@ struct imgdiff_stats {
 	double rmse;                   /* sqrt(mean of squared channel errors) */
 	double psnr;                   /* 20 log10(1 / rmse) dB (peak 1); INFINITY when rmse is 0 */
 	double mean;                   /* mean channel error */
+	double bias;                   /* mean of a - b over the channels where it is finite:
+	                                * whether one image is brighter, beyond their noise */
 	double max;                    /* largest channel error */
 	int max_x, max_y;              /* its pixel (the first in reading order); 0, 0 when max is 0 */
 	int64_t off1, off2;            /* pixels with a channel off by more than 1/255, 2/255 */

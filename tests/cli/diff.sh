@@ -61,9 +61,10 @@ expect_grep "$work/out" '^max 0\.0392157 at \(5, 3\)$'
 expect_grep "$work/out" '^off>1/255 6\.25% \(2 pixels\)$'
 expect_grep "$work/out" '^off>2/255 3\.125% \(1 pixel\)$'
 near "mean" "$(metric mean)" 0.000735294 1e-9                  # (1 + 2 + 5 + 10) / 255 / 96
+near "bias" "$(metric bias)" -0.000326797 1e-9                 # (-1 - 2 + 5 - 10) / 255 / 96: A - B, signed
 near "rmse" "$(metric rmse)" 0.00456348 1e-8                   # sqrt((1 + 4 + 25 + 100) / 96) / 255
 expect_grep "$work/out" '^rmse [0-9.e-]+ \(psnr 46\.81 dB\)$'
-[ "$(wc -l <"$work/out")" -eq 6 ] || fail "diff prints $(wc -l <"$work/out") lines, expected 6"
+[ "$(wc -l <"$work/out")" -eq 7 ] || fail "diff prints $(wc -l <"$work/out") lines, expected 7"
 # the same files read as sRGB (the default for PPM) differ by other amounts, same places
 expect_status 0 "$SCN" diff a.ppm b.ppm
 expect_grep "$work/out" '^max 0\.0[0-9]+ at \(5, 3\)$'
@@ -91,6 +92,7 @@ cat >zeros.expect <<'EOF'
 size 32x24
 rmse 0 (psnr inf dB)
 mean 0
+bias 0
 max 0
 off>1/255 0% (0 pixels)
 off>2/255 0% (0 pixels)
