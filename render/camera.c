@@ -14,6 +14,8 @@ void camera_setup(struct camera *c, struct vec3 eye, struct vec3 look_at, struct
 	c->up = vcross(c->dir, c->right);
 	c->tan_half = tan(fov * (M_PI / 360));
 	c->view_width = 0;
+	c->lens_radius = 0;
+	c->focal_distance = 0;
 	c->width = width;
 	c->height = height;
 }
@@ -37,4 +39,22 @@ struct ray camera_ray(const struct camera *c, double u, double v)
 	double sy = (1 - 2 * v) * c->tan_half * ((double)c->height / c->width);
 	struct vec3 d = vadd(c->dir, vadd(vscale(c->right, sx), vscale(c->up, sy)));
 	return (struct ray){ c->eye, vnorm(d) };
+}
+
+void camera_set_lens(struct camera *c, double aperture, struct vec3 focal_point)
+{
+	/* POV-Ray's lens (tracepixel.cpp, JitterCameraRay) spreads its samples over a disc of
+	 * radius 0.5 scaled by aperture / 2; the sharp plane is at the focal point's distance
+	 * from the camera, measured straight, not along the view */
+	c->lens_radius = aperture / 4;
+	c->focal_distance = vlen(vsub(focal_point, c->eye));
+}
+
+struct ray camera_lens_ray(const struct camera *c, struct ray r, double x, double y)
+{
+	/* the point of the sharp plane the pinhole ray reaches, then from the lens to it */
+	struct vec3 focus = vadd(r.o, vscale(r.d, c->focal_distance / vdot(r.d, c->dir)));
+	r.o = vadd(r.o, vadd(vscale(c->right, x * c->lens_radius), vscale(c->up, y * c->lens_radius)));
+	r.d = vnorm(vsub(focus, r.o));
+	return r;
 }

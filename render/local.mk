@@ -6,10 +6,12 @@ render_libscnrender_a_CPPFLAGS = $(BASE_CPPFLAGS) $(RENDER_INCLUDES)
 render_libscnrender_a_CFLAGS = $(AM_CFLAGS) $(AVX_CFLAGS)
 render_libscnrender_a_SOURCES = \
 	%D%/camera.c %D%/camera.h \
+	%D%/light.c %D%/light.h \
 	%D%/render.c %D%/render.h \
-	%D%/sampler.c %D%/sampler.h \
+	%D%/sampler.c %D%/sampler.h %D%/sobol_bits.h \
 	%D%/scene.c %D%/scene.h \
 	%D%/shade.c %D%/shade.h \
+	%D%/stream.c %D%/stream.h \
 	%D%/trace.c %D%/trace.h
 # lower*.c, a library of their own: the only files whose include path
 # holds lang/

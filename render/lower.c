@@ -12,6 +12,7 @@
 #include "camera.h"
 #include "clock.h"
 #include "image_file.h"
+#include "light.h"
 #include "lower_internal.h"
 #include "memory.h"
 #include "mesh_import.h"
@@ -394,6 +395,23 @@ static void warn_dark(struct lowering *lw)
 	           " or transmit");
 }
 
+/* Light l's area { } into the scene's next area light (out->area_lights holds one per
+ * light): its index. */
+static int32_t lower_area_light(struct scene *out, const struct light_desc *l)
+{
+	struct area_light *a = &out->area_lights[out->narea_lights];
+	for (int k = 0; k < 2; k++) {
+		a->axis[k] = v3a(l->area_axis[k]);
+		a->size[k] = l->area_size[k];
+		light_area_weights(a->size[k], a->weight[k]);
+	}
+	a->jitter = l->area_jitter;
+	a->orient = l->area_orient;
+	a->circular = l->area_circular || l->area_orient; /* POV-Ray makes an oriented light circular */
+	out->streams |= a->jitter;
+	return (int32_t)out->narea_lights++;
+}
+
 enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, struct scene *out,
                             struct lower_times *times, int64_t other_bytes)
 {
@@ -413,9 +431,14 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 	}
 	lower_check_extent(&lw, c->span, "the camera",
 	                   fmax(lower_extent_of(v3a(c->location)), lower_extent_of(v3a(c->look_at))) + view);
+	if (c->aperture > 0) {
+		camera_set_lens(&out->camera, c->aperture, v3a(c->focal_point));
+		out->streams = true;
+	}
 	if (desc->fog.given)
 		out->fog = (struct fog){ desc->fog.distance, v3a(desc->fog.color) };
 	out->lights = xcalloc(desc->nlights, sizeof *out->lights);
+	out->area_lights = xcalloc(desc->nlights, sizeof *out->area_lights);
 	for (size_t i = 0; i < desc->nlights; i++) {
 		const struct light_desc *l = &desc->lights[i];
 		struct light *li = &out->lights[out->nlights++];
@@ -426,6 +449,7 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 		li->shadowless = l->shadowless;
 		li->fade_distance = l->fade_distance;
 		li->fade_power = l->fade_distance > 0 ? l->fade_power : 0; /* POV-Ray: no distance, no fade */
+		li->area = l->area ? lower_area_light(out, l) : -1;
 		li->spot = l->spot;
 		if (l->spot) {
 			li->point_at = v3a(l->point_at);

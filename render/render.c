@@ -16,6 +16,7 @@
 #include "cleanup.h"
 #include "clock.h"
 #include "sampler.h"
+#include "stream.h"
 #include "xalloc.h"
 
 enum { TILE = 16 };
@@ -56,9 +57,14 @@ enum { MIN_ADAPTIVE = 8 };
 enum { PROBE_MIN = 4096 };
 #define PROBE_KEY ((uint64_t)1 << 32)  /* hash key of the choice; above sampler_pixel's keys */
 
-/* The ray of sample i of pixel (px, py) at image-plane offset (sx, sy). */
+/* The lens's dimension of a sample's stream; the area lights' are keyed by their paths
+ * (trace.c), which start from 1. */
+enum { DIM_LENS = 0 };
+
+/* The ray of sample i of pixel (px, py) at image-plane offset (sx, sy), through the lens
+ * where the sample's stream says when the camera has one. */
 static struct ray sample_ray(const struct camera *cam, const struct sampler *sm, int px, int py, int i,
-                             double sx, double sy)
+                             double sx, double sy, const struct sample_stream *ss)
 {
 	double u = (px + sx) / cam->width, v = (py + sy) / cam->height;
 	int a, b, g;
@@ -68,7 +74,16 @@ static struct ray sample_ray(const struct camera *cam, const struct sampler *sm,
 		u = (g * (double)px + a + 0.5) / (g * (double)cam->width);
 		v = (g * (double)py + b + 0.5) / (g * (double)cam->height);
 	}
-	return camera_ray(cam, u, v);
+	struct ray r = camera_ray(cam, u, v);
+	if (cam->lens_radius > 0) {
+		struct stream_dim d;
+		double lu, lv, x, y;
+		stream_dim(ss, DIM_LENS, &d);
+		stream_point(&d, 0, &lu, &lv);
+		stream_disc(lu, lv, &x, &y);
+		r = camera_lens_ray(cam, r, x, y);
+	}
+	return r;
 }
 
 /* One replica of a pixel: the mean of its samples (Welford's running mean and variance),
@@ -79,13 +94,17 @@ static struct vec3 pixel_mean(const struct scene *sc, struct sampler *sm, double
 {
 	const struct sampling *sp = &sc->sampling;
 	sampler_pixel(sm, (uint32_t)px, (uint32_t)py, replica, xy);
+	struct sample_stream ss = { 0, 0, (uint32_t)sp->count, sp->kind == SAMPLE_RANDOM };
+	if (sc->streams)
+		ss.key = stream_pixel_key(sp->seed, (uint32_t)px, (uint32_t)py, replica);
 	struct vec3 mean = v3s(0), m2 = v3s(0);
 	int k = 0;
 	bool passed = false;          /* the last adaptive check found the error below the target */
 	for (int i = 0; i < sp->count; i++) {
-		struct ray r = sample_ray(&sc->camera, sm, px, py, i, xy[2 * i], xy[2 * i + 1]);
+		ss.index = (uint32_t)i;
+		struct ray r = sample_ray(&sc->camera, sm, px, py, i, xy[2 * i], xy[2 * i + 1], &ss);
 		(*camera)++;
-		struct vec3 c = trace_ray(sc, &r, 1, 0, st);
+		struct vec3 c = trace_ray(sc, &r, trace_camera_path(), &ss, st);
 		if (!isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z)) {
 			st->nonfinite++; /* counted, shown by --stats, and kept out of the image */
 			continue;
@@ -170,7 +189,9 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 	job.tiles_x = (opt->x1 - opt->x0 + TILE - 1) / TILE;
 	job.ntiles = job.tiles_x * ((opt->y1 - opt->y0 + TILE - 1) / TILE);
 	size_t npixels = (size_t)(opt->x1 - opt->x0) * (size_t)(opt->y1 - opt->y0);
-	if (sc->sampling.kind != SAMPLE_CENTER && sc->sampling.kind != SAMPLE_GRID && npixels > 0)
+	/* the center and grid patterns are the same in both replicas, unless the samples also
+	 * draw from their streams */
+	if ((sc->streams || (sc->sampling.kind != SAMPLE_CENTER && sc->sampling.kind != SAMPLE_GRID)) && npixels > 0)
 		job.probe_share = fmin(1, fmax(PROBE_SHARE, PROBE_MIN / (double)npixels));
 	atomic_init(&job.next_tile, 0);
 	atomic_init(&job.done_tiles, 0);
@@ -213,6 +234,7 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 		st->probe_camera += workers[i].stats.probe_camera;
 		st->probe_pixels += workers[i].stats.probe_pixels;
 		st->shadow += workers[i].stats.shadow;
+		st->area_shadow += workers[i].stats.area_shadow;
 		st->reflection += workers[i].stats.reflection;
 		st->refraction += workers[i].stats.refraction;
 		st->nonfinite += workers[i].stats.nonfinite;

@@ -7,9 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sobol_bits.h"
 #include "xalloc.h"
 
-#define GOLDEN 0x9e3779b97f4a7c15u     /* 2^64 / phi: splitmix64's Weyl increment */
 #define TILE_SEED 0x706f6973736f6e31u  /* fixed: the poisson tile depends on count alone */
 
 /* Tuning of the relaxation dart throwing that builds the poisson tile. After TILE_TRIES
@@ -32,14 +32,6 @@ struct sampler {
 	const uint64_t *tile;  /* poisson: 2 * count coordinates in units of 2^-64, maybe proto's */
 	uint64_t *own_tile;    /* what sampler_free releases: tile, if this sampler built it */
 };
-
-/* splitmix64's finaliser (Stafford's variant 13), as lang/builtins.c's rand uses it. */
-static inline uint64_t mix64(uint64_t z)
-{
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-	return z ^ (z >> 31);
-}
 
 uint64_t sampler_hash64(uint64_t seed, uint64_t a, uint64_t b, uint64_t c)
 {
@@ -77,12 +69,6 @@ static uint32_t rng_below(struct rng *r, uint32_t range)
 	}
 	return (uint32_t)(m >> 32);
 }
-
-/* Jitter inside a stratum, at the midpoints of 2^32 sub-intervals: never 0 or 1. For a
- * stratum index k < 2^20, k + u is exact, and (k + u) / d, even computed as a product with
- * 1 / d, stays strictly inside [k / d, (k + 1) / d) for d < 2^20: no point lands on a
- * stratum's edge or on 1. */
-static inline double jitter32(uint32_t bits) { return ((double)bits + 0.5) * 0x1.0p-32; }
 
 /* Fills p[0..len) with a uniform random permutation of 0..len-1 whose first k entries are
  * final (a partial Fisher-Yates shuffle). */
@@ -318,39 +304,6 @@ static void pixel_poisson(const struct sampler *sm, struct rng *r, double *xy)
 		xy[2 * i] = (double)(int64_t)(x >> 11) * 0x1.0p-53;
 		xy[2 * i + 1] = (double)(int64_t)(y >> 11) * 0x1.0p-53;
 	}
-}
-
-static inline uint32_t reverse32(uint32_t x)
-{
-	x = (x << 16) | (x >> 16);
-	x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);
-	x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);
-	x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
-	return ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
-}
-
-/* Sobol's second dimension: the index's bits times the Pascal matrix mod 2. */
-static inline uint32_t sobol_y(uint32_t i)
-{
-	uint32_t r = 0;
-	for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
-		if (i & 1)
-			r ^= v;
-	return r;
-}
-
-/* A nested uniform (Owen) scramble of a 32-bit fraction, by Laine and Karras's hash in
- * reversed bit order (Burley, "Practical hash-based Owen scrambling", JCGT 2020): each
- * bit is flipped by a function of the bits above it only. */
-static inline uint32_t owen_scramble(uint32_t x, uint32_t seed)
-{
-	x = reverse32(x);
-	x += seed;
-	x ^= x * 0x6c50b47cu;
-	x ^= x * 0xb82f1e52u;
-	x ^= x * 0xc7afe638u;
-	x ^= x * 0x8d22f6e6u;
-	return reverse32(x);
 }
 
 /* Jittered points for adaptive sampling, which stops a pixel at a power of two: the

@@ -14,6 +14,7 @@ uint64_t scene_bytes(uint64_t nprims, uint64_t ntriangles, uint64_t nvertices)
 void scene_free(struct scene *s)
 {
 	free(s->lights);
+	free(s->area_lights);
 	free(s->materials);
 	free(s->affines);
 	free(s->mesh_uses);

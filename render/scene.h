@@ -33,6 +33,22 @@ struct light {
 	struct vec3 axis;              /* unit vector from pos towards point_at */
 	double radius, falloff;        /* degrees, for scn pov */
 	double cos_radius, cos_falloff, tightness;
+	int32_t area;                  /* LIGHT_POINT: into scene.area_lights; -1: a point */
+};
+
+enum { AREA_MAX = 64 };            /* test points along an area light's axis, at most */
+
+/* area { AXIS1, AXIS2, N1, N2 ... } of LANGUAGE.md section 12, POV-Ray's area_light
+ * without adaptive (povray-equivalence.md section 15): shading towards the light's
+ * position, times a weighted average of size[0] x size[1] shadow tests. */
+struct area_light {
+	struct vec3 axis[2];
+	int size[2];                   /* 1 to AREA_MAX; 1: no extent along that axis */
+	bool jitter;                   /* each test point at random in its cell, per sample */
+	bool circular;                 /* the grid pulled in onto a disc */
+	bool orient;                   /* turned to face each lit point (and so circular) */
+	double weight[2][AREA_MAX];    /* along each axis, POV-Ray's recursive corner weights:
+	                                * the test at (u, v) weighs weight[0][u] * weight[1][v] */
 };
 
 /* What a material's k_d is: a colour, a checker of two, a pattern through its colour map,
@@ -96,6 +112,10 @@ struct scene {
 	struct camera camera;
 	struct light *lights;
 	size_t nlights;
+	struct area_light *area_lights;
+	size_t narea_lights;
+	bool streams;                  /* a sample draws numbers beyond its place in the pixel
+	                                * (stream.h): for the lens, or a jittered area light */
 	struct material *materials;
 	size_t nmaterials;
 	struct affine *affines;

@@ -10,6 +10,7 @@
 #include <math.h>
 
 #include "accel.h"
+#include "light.h"
 #include "shade.h"
 
 struct vec3 trace_sky(const struct sky *sky, struct vec3 d)
@@ -71,28 +72,56 @@ static bool any_positive(struct vec3 v)
 	return v.x > 0 || v.y > 0 || v.z > 0;
 }
 
-/* POV-Ray's spotlight factor (povray-equivalence.md section 15) for unit l from the lit
- * point towards the light: c^tightness, c the cosine between the axis and -l (0 when
- * c <= 0), times 1 inside the radius, 0 beyond the falloff, and the smoothstep of the
- * cosine between them. A radius equal to the falloff is a hard edge. */
-static double spot_factor(const struct light *li, struct vec3 l)
+/* The light reaching a surface point from the test points of area light a (its centre at
+ * li->pos, in unit direction l from the point), as POV-Ray's weighted average of
+ * them: each a shadow test from shadow_from towards the point, a jittered light placing
+ * it at random in its cell from the sample's stream. Tests whose weight is 0 are skipped. */
+static struct vec3 area_visibility(const struct scene *sc, const struct light *li, const struct area_light *a,
+                                   const struct surface_point *shadow_from, struct vec3 l, uint64_t dim,
+                                   const struct sample_stream *ss, struct ray_stats *st)
 {
-	double c = -vdot(l, li->axis);
-	if (!(c > 0) || c < li->cos_falloff)
-		return 0;
-	double f = pow(c, li->tightness);
-	if (c < li->cos_radius) {
-		double s = (c - li->cos_falloff) / (li->cos_radius - li->cos_falloff);
-		f *= s * s * (3 - 2 * s);
-	}
-	return f;
+	struct vec3 axes[2];
+	light_area_axes(a, l, axes);
+	struct stream_dim sd;
+	if (a->jitter)
+		stream_dim(ss, dim, &sd);
+	struct vec3 sum = v3s(0);
+	for (int u = 0; u < a->size[0]; u++)
+		for (int v = 0; v < a->size[1]; v++) {
+			double w = a->weight[0][u] * a->weight[1][v];
+			if (!(w > 0))
+				continue;
+			double ju = u, jv = v;
+			if (a->jitter) {
+				double du, dv;
+				stream_point(&sd, (uint32_t)(u * AREA_MAX + v), &du, &dv);
+				ju += du - 0.5;
+				jv += dv - 0.5;
+			}
+			struct vec3 q = vadd(li->pos, light_area_offset(a, axes, ju, jv));
+			struct vec3 to = vsub(q, shadow_from->p);
+			double dist = vlen(to);
+			if (!(dist > 0))
+				continue; /* a test point on the lit point: no direction, as a point light */
+			struct ray shadow = { ray_offset_origin(shadow_from, vscale(to, 1 / dist)), v3s(0) };
+			to = vsub(q, shadow.o);
+			double len = vlen(to), tmax = len * (1 - 1e-9);
+			if (!(tmax > 0))
+				continue;
+			shadow.d = vscale(to, 1 / len);
+			st->area_shadow++;
+			sum = vadd(sum, vscale(accel_transmittance(&sc->accel, &sc->geo, &shadow, tmax), w));
+		}
+	return sum;
 }
 
 /* Direct light at sp from every light, seen along v with facing normal n; the shadow rays
- * start from shadow_from (shape_shadow_point). */
+ * start from shadow_from (shape_shadow_point). An area light is shaded once towards its
+ * centre, the test points only weighing how much of it arrives (POV-Ray's model). */
 static struct vec3 direct_light(const struct scene *sc, const struct surface_point *sp,
                                 const struct surface_point *shadow_from, struct vec3 n, struct vec3 v, struct vec3 kd,
-                                const struct material *m, struct ray_stats *st)
+                                const struct material *m, uint64_t path_key, const struct sample_stream *ss,
+                                struct ray_stats *st)
 {
 	struct vec3 sum = v3s(0);
 	for (size_t i = 0; i < sc->nlights; i++) {
@@ -113,14 +142,20 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 			continue;
 		struct vec3 color = li->color;
 		if (li->spot) {
-			double f = spot_factor(li, l);
+			double f = light_spot(li, l);
 			if (!(f > 0))
 				continue;
 			color = vscale(color, f);
 		}
 		if (li->fade_power > 0) /* lower.c keeps it 0 unless fade_distance > 0 */
-			color = vscale(color, 2 / (1 + pow(dist / li->fade_distance, li->fade_power)));
-		if (!li->shadowless) {
+			color = vscale(color, light_fade(li, dist));
+		if (!li->shadowless && li->area >= 0) {
+			/* each branch of the sample's tree of rays, and each light, draws apart */
+			uint64_t dim = path_key * 0x100000001b3u + i;
+			color = vmul(color, area_visibility(sc, li, &sc->area_lights[li->area], shadow_from, l, dim, ss, st));
+			if (vzero(color))
+				continue;
+		} else if (!li->shadowless) {
 			/* a segment from just off the surface to the light: relative end, so the
 			 * light itself needs no tolerance (NUMERICS.md section 3) */
 			struct ray shadow = { ray_offset_origin(shadow_from, l), l };
@@ -173,9 +208,17 @@ static inline struct vec3 veil(const struct scene *sc, struct vec3 c, double t, 
 	return vadd(vscale(c, k), vscale(sc->fog.color, 1 - k));
 }
 
-/* inside counts the solids a ray is in, as refraction enters and leaves them, for the fog */
-struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, int inside, struct ray_stats *st)
+/* The path of a ray's child: its depth one more, in `inside` solids, and its branch
+ * named apart from its parent's and its sibling's (branch 1 the mirror, 2 the refraction). */
+static inline struct path child_path(struct path p, int inside, uint64_t branch)
 {
+	return (struct path){ p.depth + 1, inside, p.key * 3 + branch };
+}
+
+struct vec3 trace_ray(const struct scene *sc, const struct ray *r, struct path path, const struct sample_stream *ss,
+                      struct ray_stats *st)
+{
+	int depth = path.depth, inside = path.inside;
 	struct hit h = { .t = INFINITY };
 	if (!accel_intersect(&sc->accel, &sc->geo, r, &h)) /* an escaping ray: the fog's colour, when fogged */
 		return sc->fog.distance > 0 && !inside ? sc->fog.color : trace_sky(&sc->sky, r->d);
@@ -205,7 +248,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, in
 			st->images += m->pigment == MATERIAL_IMAGE;
 			kd = shade_diffuse(sc, srf, m, &h, &sp);
 		}
-		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, st));
+		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, path.key, ss, st));
 	}
 	if (depth >= sc->max_depth)
 		return veil(sc, color, h.t, inside);
@@ -224,7 +267,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, in
 			struct vec3 mirror = mirror_direction(r->d, n, raw);
 			struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 			st->reflection++;
-			return veil(sc, vadd(color, trace_ray(sc, &rr, depth + 1, inside, st)), h.t, inside);
+			return veil(sc, vadd(color, trace_ray(sc, &rr, child_path(path, inside, 1), ss, st)), h.t, inside);
 		}
 		if (m->fresnel) {
 			double f = fresnel(1 / eta, cos_i);
@@ -237,14 +280,14 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, int depth, in
 			st->refraction++;
 			/* through the surface: into one more solid, or out of one */
 			int next = entering ? inside + 1 : inside > 0 ? inside - 1 : 0;
-			color = vadd(color, vmul(kt, trace_ray(sc, &rt, depth + 1, next, st)));
+			color = vadd(color, vmul(kt, trace_ray(sc, &rt, child_path(path, next, 2), ss, st)));
 		}
 	}
 	if (any_positive(kr)) {
 		struct vec3 mirror = mirror_direction(r->d, n, raw);
 		struct ray rr = { ray_offset_origin(&sp, mirror), vnorm(mirror) };
 		st->reflection++;
-		color = vadd(color, vmul(kr, trace_ray(sc, &rr, depth + 1, inside, st)));
+		color = vadd(color, vmul(kr, trace_ray(sc, &rr, child_path(path, inside, 1), ss, st)));
 	}
 	return veil(sc, color, h.t, inside);
 }

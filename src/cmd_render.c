@@ -229,10 +229,13 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 		        "  image %llu  bump %llu\n", sc->npatterns, sc->nimage_maps, sc->nimages, bytes / 1e6,
 		        (unsigned long long)st->patterns, (unsigned long long)st->images, (unsigned long long)st->bumps);
 	}
-	fprintf(stderr, "rays:  camera %llu  shadow %llu  reflection %llu  refraction %llu  total %llu\n",
-	        (unsigned long long)st->camera, (unsigned long long)st->shadow, (unsigned long long)st->reflection,
+	fprintf(stderr, "rays:  camera %llu  shadow %llu", (unsigned long long)st->camera, (unsigned long long)st->shadow);
+	if (sc->narea_lights) /* a scene's area-light tests, its dearest rays, apart from the point lights' */
+		fprintf(stderr, "  area shadow %llu", (unsigned long long)st->area_shadow);
+	fprintf(stderr, "  reflection %llu  refraction %llu  total %llu\n", (unsigned long long)st->reflection,
 	        (unsigned long long)st->refraction,
-	        (unsigned long long)(st->camera + st->probe_camera + st->shadow + st->reflection + st->refraction));
+	        (unsigned long long)(st->camera + st->probe_camera + st->shadow + st->area_shadow + st->reflection +
+	                             st->refraction));
 	if (st->probe_pixels)
 		fprintf(stderr, "error estimate: %llu pixels rendered twice, %llu camera rays\n",
 		        (unsigned long long)st->probe_pixels, (unsigned long long)st->probe_camera);

@@ -552,6 +552,23 @@ static void scene_ball(const struct scene *sc, struct vec3 *centre, double *radi
 	*radius = r;
 }
 
+/* Focal blur: POV-Ray's aperture is four times scn's lens radius (camera_set_lens), and
+ * its sharp plane lies at the focal point's distance, which the point on the view's axis
+ * at that distance gives. Each pixel traces blur_samples rays, as many as scn's samples,
+ * all of them (variance 0 turns off its early stop); POV-Ray places them on the lens and
+ * in the pixel by its own rule, so the images agree in mean only. */
+static void write_lens(struct pov *p)
+{
+	const struct camera *c = &p->sc->camera;
+	if (!(c->lens_radius > 0))
+		return;
+	fputs(" aperture ", p->f);
+	pov_num(p->f, 4 * c->lens_radius);
+	fputs(" focal_point ", p->f);
+	pov_vec(p->f, vadd(c->eye, vscale(c->dir, c->focal_distance)));
+	fprintf(p->f, " blur_samples %d variance 0", p->sc->sampling.count);
+}
+
 static void write_camera(struct pov *p)
 {
 	const struct camera *c = &p->sc->camera;
@@ -572,11 +589,14 @@ static void write_camera(struct pov *p)
 		pov_num(f, c->view_width);
 		fputs(" up y*", f);
 		pov_num(f, c->view_width);
-		fprintf(f, "*(%d/%d) }\n", c->height, c->width);
+		fprintf(f, "*(%d/%d)", c->height, c->width);
+		write_lens(p);
+		fputs(" }\n", f);
 		return;
 	}
 	fprintf(f, " right x*%d/%d up y angle ", c->width, c->height);
 	pov_num(f, given ? o->fov : 2 * atan(c->tan_half) * (180 / M_PI));
+	write_lens(p);
 	fputs(" }\n", f);
 }
 
@@ -660,6 +680,17 @@ static void write_lights(struct pov *p)
 			fputs(" tightness ", f);
 			pov_num(f, l->tightness);
 		}
+		if (l->area >= 0) {
+			/* POV-Ray's area_light without adaptive subdivides its grid fully (its
+			 * Adaptive_Level defaults to 100): the weights scn computes */
+			const struct area_light *a = &sc->area_lights[l->area];
+			fputs(" area_light ", f);
+			pov_vec(f, a->axis[0]);
+			fputs(", ", f);
+			pov_vec(f, a->axis[1]);
+			fprintf(f, ", %d, %d%s%s%s", a->size[0], a->size[1], a->jitter ? " jitter" : "",
+			        a->circular ? " circular" : "", a->orient ? " orient" : "");
+		}
 		if (l->fade_power > 0) {
 			fputs(" fade_distance ", f);
 			pov_num(f, l->fade_distance);
@@ -711,7 +742,9 @@ static void write_header(struct pov *p)
 
 	int scale = 1;                 /* grid: render n times the size and average n x n blocks */
 	char aa[64] = "-A";
-	if (sp->count > 1 && sp->kind == SAMPLE_GRID) {
+	if (sc->camera.lens_radius > 0) {
+		/* focal blur samples the pixel itself (write_lens) */
+	} else if (sp->count > 1 && sp->kind == SAMPLE_GRID) {
 		scale = (int)lround(sqrt((double)sp->count));
 	} else if (sp->count > 1) {
 		/* +AM2 +Rd samples a (2^(d-1)+1)^2 lattice over the pixel: about count samples */
@@ -756,6 +789,15 @@ static void write_header(struct pov *p)
 	if (sp->target_error > 0 && sp->count > 1)
 		fprintf(f, "// target_error %g: NOT pixel-exact: scn stops sampling a pixel early where its error is small,"
 		           " POV-Ray does not.\n", sp->target_error);
+	if (sc->camera.lens_radius > 0)
+		fputs("// focal blur: NOT pixel-exact: POV-Ray places its blur_samples on the lens and in the pixel by its own"
+		      " rule; the images agree in their mean.\n", f);
+	for (size_t i = 0; i < sc->narea_lights; i++)
+		if (sc->area_lights[i].jitter) {
+			fputs("// area_light jitter: NOT pixel-exact: POV-Ray jitters by its own random numbers; the images"
+			      " agree in their mean.\n", f);
+			break;
+		}
 	if (p->notes)
 		fputs(p->notes, f);
 	fprintf(f, "#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level %d adc_bailout 0"

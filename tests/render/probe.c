@@ -2,7 +2,8 @@
  *   pixel X Y R G B TOL     linear RGB of pixel (X, Y) within TOL per channel
  *   mean R G B TOL          the image's mean colour within TOL
  *   rays KIND N             --stats counted exactly N of KIND: camera, shadow,
- *                           reflection, refraction rays, or nonfinite radiance values
+ *                           area_shadow, reflection, refraction rays, or nonfinite
+ *                           radiance values
  *   rays KIND < N           --stats counted fewer than N of KIND (or > N: more than N)
  *   count X0 Y0 X1 Y1 R G B TOL N
  *                           exactly N pixels of the rectangle [X0, X1) x [Y0, Y1) are
@@ -68,7 +69,8 @@ static void pixel_check(const struct image *img, const char *what, const double 
 static long long stat_of(const char *stats, const char *kind)
 {
 	static const char *const labels[][2] = {
-		{ "camera", "  camera " }, { "shadow", "  shadow " }, { "reflection", "  reflection " },
+		{ "camera", "  camera " }, { "shadow", "  shadow " }, { "area_shadow", "  area shadow " },
+		{ "reflection", "  reflection " },
 		{ "refraction", "  refraction " }, { "nonfinite", "non-finite radiance values: " },
 	};
 	for (size_t i = 0; i < sizeof labels / sizeof labels[0]; i++)

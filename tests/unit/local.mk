@@ -58,3 +58,7 @@ check_PROGRAMS += tests/unit/test_texture
 TESTS += tests/unit/test_texture
 tests_unit_test_texture_SOURCES = tests/unit/test_texture.c
 tests_unit_test_texture_LDADD = $(SCN_LIBS)
+check_PROGRAMS += tests/unit/test_light
+TESTS += tests/unit/test_light
+tests_unit_test_light_SOURCES = tests/unit/test_light.c
+tests_unit_test_light_LDADD = $(SCN_LIBS)
