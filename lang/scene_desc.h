@@ -16,6 +16,8 @@ struct camera_desc {
 	double fov;                    /* horizontal, degrees; unused when orthographic */
 	bool orthographic;             /* parallel rays across a view view_width wide */
 	double view_width;             /* orthographic: the view's width in scene units */
+	double aperture;               /* 0: a pinhole; > 0: thin-lens focal blur */
+	double focal_point[3];         /* what is sharp; look_at when not given */
 	int width, height;
 	bool given;                    /* false: the defaults of LANGUAGE.md */
 	struct span span;
@@ -34,6 +36,10 @@ struct light_desc {
 	double point_at[3];
 	double radius, falloff;        /* degrees from the axis, in [0, 180), radius <= falloff */
 	double tightness;
+	bool area;                     /* area { ... }: the fields below */
+	double area_axis[2][3];        /* AXIS1, AXIS2 as written */
+	int area_size[2];              /* N1, N2: whole numbers, 1 to 64 */
+	bool area_jitter, area_circular, area_orient;
 	struct span span;
 };
 
