@@ -198,7 +198,7 @@ material leaf3 {{ diffuse <0.8, 0.45, 0.1>  specular 0.2  shininess 30 }}
 plane {{ <0, 1, 0>, 0  material ground }}
 let leaves = [leaf1, leaf2, leaf3]
 // a unit vector at random, from the key k
-def jitter(k) = normalize(<rand(k) - 0.5, rand(k + 1) - 0.5, rand(k + 2) - 0.5>)
+def random_dir(k) = normalize(<rand(k) - 0.5, rand(k + 1) - 0.5, rand(k + 2) - 0.5>)
 // a branch from base along dir (a unit vector), and below it two branches turned apart
 // about a random axis across it; k numbers the branches as a heap does (children 2k, 2k + 1)
 def branch(base, dir, len, r, d, k) {{
@@ -206,7 +206,7 @@ def branch(base, dir, len, r, d, k) {{
   cylinder {{ base, tip, r  material bark }}
   sphere {{ tip, r  material bark }}
   if d > 0 {{
-    let side = normalize(cross(dir, jitter(7 * k)))
+    let side = normalize(cross(dir, random_dir(7 * k)))
     let spread = 0.55 + 0.5 * rand(7 * k + 3)
     branch(tip, normalize(dir + spread * side + <0, 0.25, 0>), len * (0.68 + 0.2 * rand(7 * k + 4)), r * 0.72,
            d - 1, 2 * k)

@@ -57,9 +57,14 @@ static void check_combination(struct checker *c, struct ast *stmt, struct ast *s
 		if (!seen[KW_POSITION] && !seen[KW_DIRECTION] && complete)
 			diag_error(c->diag, at, "a light needs a position or a direction");
 		exclusive(c, seen[KW_POSITION], seen[KW_DIRECTION], "a light has a position or a direction, not both");
-		if (seen[KW_SPOTLIGHT] && seen[KW_DIRECTION])
-			diag_error(c->diag, seen[KW_SPOTLIGHT]->u.item.name_span, "'spotlight' applies only to a light with a "
-			           "position: a light with a direction has no point to shine from");
+		/* what a light with a direction has no point for */
+		static const struct { enum kw kw; const char *why; } placed_only[] = {
+			{ KW_SPOTLIGHT, "no point to shine from" }, { KW_AREA, "no point to centre its area on" },
+		};
+		for (size_t i = 0; i < sizeof placed_only / sizeof placed_only[0]; i++)
+			if (seen[placed_only[i].kw] && seen[KW_DIRECTION])
+				diag_error(c->diag, seen[placed_only[i].kw]->u.item.name_span, "'%s' applies only to a light with a "
+				           "position: a light with a direction has %s", kw_name(placed_only[i].kw), placed_only[i].why);
 		struct ast *dist = seen[KW_FADE_DISTANCE], *power = seen[KW_FADE_POWER];
 		struct ast *fade = dist && (!power || dist->span.start < power->span.start) ? dist : power;
 		if (fade && seen[KW_DIRECTION])

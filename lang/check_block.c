@@ -1,6 +1,6 @@
 /* check_block.c: which attributes each block statement takes (camera, light, material,
  * the objects and CSGs, skybox, samples, fog) and each block inside a material (pattern, image,
- * normal) or a light (spotlight), the shape of each attribute's value, and the check of a
+ * normal) or a light (spotlight, area), the shape of each attribute's value, and the check of a
  * block against them. */
 #include "check_internal.h"
 
@@ -21,16 +21,19 @@ struct attr_spec {
 static const struct attr_spec camera_attrs[] = {
 	{ KW_LOCATION, S_VEC, false }, { KW_LOOK_AT, S_VEC, false }, { KW_UP, S_VEC, false },
 	{ KW_FOV, S_NUM, false }, { KW_RESOLUTION, S_INT2, false }, { KW_ORTHOGRAPHIC, S_FLAG, false },
-	{ KW_WIDTH, S_NUM, false },
+	{ KW_WIDTH, S_NUM, false }, { KW_APERTURE, S_NUM, false }, { KW_FOCAL_POINT, S_VEC, false },
 };
 static const struct attr_spec light_attrs[] = {
 	{ KW_POSITION, S_VEC, false }, { KW_DIRECTION, S_VEC, false }, { KW_COLOR, S_VEC, false },
 	{ KW_INTENSITY, S_NUM, false }, { KW_SHADOWLESS, S_FLAG, false }, { KW_FADE_DISTANCE, S_NUM, false },
-	{ KW_FADE_POWER, S_NUM, false }, { KW_SPOTLIGHT, S_BLOCK, false },
+	{ KW_FADE_POWER, S_NUM, false }, { KW_SPOTLIGHT, S_BLOCK, false }, { KW_AREA, S_BLOCK, false },
 };
 /* and radius, which stays a name that scenes may use: spotlight_radius checks it */
 static const struct attr_spec spotlight_attrs[] = {
 	{ KW_POINT_AT, S_VEC, false }, { KW_FALLOFF, S_NUM, false }, { KW_TIGHTNESS, S_NUM, false },
+};
+static const struct attr_spec area_attrs[] = {
+	{ KW_JITTER, S_FLAG, false }, { KW_CIRCULAR, S_FLAG, false }, { KW_ORIENT, S_FLAG, false },
 };
 static const struct attr_spec material_attrs[] = {
 	{ KW_LIKE, S_LIKE, false }, { KW_DIFFUSE, S_PIGMENT, false }, { KW_SPECULAR, S_VEC, false },
@@ -126,6 +129,9 @@ static const struct block_spec normal_spec = {
 };
 static const struct block_spec image_spec = SPEC("image", image_attrs, "", NULL, NULL);
 static const struct block_spec spotlight_spec = SPEC("spotlight", spotlight_attrs, "", NULL, NULL);
+static const struct block_spec area_spec = SPEC("area", area_attrs, "2211", "area { AXIS1, AXIS2, N1, N2 ... }",
+                                                "an area light's AXIS1", "an area light's AXIS2",
+                                                "an area light's N1", "an area light's N2");
 
 static const struct attr_spec *find_attr(const struct block_spec *spec, int kw)
 {
@@ -240,6 +246,7 @@ static const struct block_spec *texture_spec(int kw);
 static void check_texture(struct checker *c, const struct block_spec *spec, struct ast_block *block,
                           struct span kw_span);
 static void check_spotlight(struct checker *c, struct ast_block *block, struct span kw_span);
+static void check_area(struct checker *c, struct ast_block *block, struct span kw_span);
 
 static void check_item(struct checker *c, struct ast *item, const struct attr_spec *a)
 {
@@ -328,11 +335,14 @@ static void check_item(struct checker *c, struct ast *item, const struct attr_sp
 	case S_BLOCK:
 		if (!item->u.item.block) {
 			diag_error(c->diag, args->n ? args->v[0]->span : at, "'%s' takes a block: %s", name,
-			           item->u.item.kw == KW_SPOTLIGHT ? "spotlight { point_at <0, 0, 0> }" : "normal { bumps 0.5 }");
+			           item->u.item.kw == KW_SPOTLIGHT ? "spotlight { point_at <0, 0, 0> }"
+			           : item->u.item.kw == KW_AREA ? "area { <1, 0, 0>, <0, 0, 1>, 4, 4 }" : "normal { bumps 0.5 }");
 			return;
 		}
 		if (item->u.item.kw == KW_SPOTLIGHT)
 			check_spotlight(c, item->u.item.block, at);
+		else if (item->u.item.kw == KW_AREA)
+			check_area(c, item->u.item.block, at);
 		else
 			check_texture(c, &normal_spec, item->u.item.block, at);
 		return;
@@ -405,6 +415,16 @@ static bool misplaced(struct checker *c, struct ast *item)
 		return true;
 	case KW_POINT_AT: case KW_FALLOFF: case KW_TIGHTNESS:
 		diag_error(c->diag, at, "'%s' goes in a light's spotlight { ... }", item_name(item));
+		return true;
+	case KW_AREA:
+		diag_error(c->diag, at, "'area' goes in a light: light { position P  area { AXIS1, AXIS2, N1, N2 } }");
+		return true;
+	case KW_JITTER: case KW_CIRCULAR: case KW_ORIENT:
+		diag_error(c->diag, at, "'%s' goes in a light's area { AXIS1, AXIS2, N1, N2 ... }, after the four values",
+		           item_name(item));
+		return true;
+	case KW_APERTURE: case KW_FOCAL_POINT:
+		diag_error(c->diag, at, "'%s' goes in the camera: camera { ... aperture A  focal_point V }", item_name(item));
 		return true;
 	case KW_PATTERN: case KW_IMAGE: /* specular pattern { ... } */
 		if (!item->u.item.block)
@@ -718,4 +738,16 @@ static void check_spotlight(struct checker *c, struct ast_block *block, struct s
 	struct ast *seen[KW_COUNT_ALL] = { 0 };
 	if (check_block(c, &spotlight_spec, block, kw_span, seen) && !seen[KW_POINT_AT])
 		diag_error(c->diag, kw_span, "a spotlight needs the point it aims at: spotlight { point_at <0, 0, 0> }");
+}
+
+/* area { AXIS1, AXIS2, N1, N2  [jitter] [circular] [orient] }, whose keyword is at
+ * kw_span: its four values and its flags; eval.c checks what the values must be. */
+static void check_area(struct checker *c, struct ast_block *block, struct span kw_span)
+{
+	if (block->broken) {
+		c->tainted = true;
+		return;
+	}
+	struct ast *seen[KW_COUNT_ALL] = { 0 };
+	check_block(c, &area_spec, block, kw_span, seen);
 }

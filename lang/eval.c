@@ -13,10 +13,43 @@
 
 /* ---- statements ---- */
 
+/* Whether nonzero a and b are parallel: the sine of the angle between them, from unit
+ * vectors, so scale-free (also for vectors of 1e-310, whose products would underflow). */
+static bool parallel(const double a[3], const double b[3])
+{
+	double ua[3], ub[3], side[3];
+	unit(a, ua);
+	unit(b, ub);
+	cross(ua, ub, side);
+	return norm(side) <= 1e-12;
+}
+
+/* The camera's focal_point (item at_focus, or look_at when NULL) against its view
+ * direction dir; a focal point with nothing to blur is only warned of. */
+static void eval_focus(struct evaluator *ev, struct camera_desc *c, struct ast *at_focus, bool aperture_ok,
+                       const double dir[3])
+{
+	if (!at_focus) {
+		memcpy(c->focal_point, c->look_at, sizeof c->focal_point);
+		return;
+	}
+	double to[3] = { c->focal_point[0] - c->location[0], c->focal_point[1] - c->location[1],
+	                 c->focal_point[2] - c->location[2] };
+	if (to[0] * dir[0] + to[1] * dir[1] + to[2] * dir[2] <= 0) {
+		char nb[3][32];
+		eval_error(ev, arg0(at_focus), "focal_point <%s, %s, %s> is not in front of the camera (behind or beside "
+		           "its location)", value_number_text(c->focal_point[0], nb[0]),
+		           value_number_text(c->focal_point[1], nb[1]), value_number_text(c->focal_point[2], nb[2]));
+	}
+	if (aperture_ok && c->aperture == 0)
+		diag_warning(ev->diag, at_focus->u.item.name_span, "focal_point does nothing without an aperture > 0");
+}
+
 static void eval_camera(struct evaluator *ev, struct ast *s)
 {
 	struct camera_desc *c = &ev->out->camera;
-	struct ast *at_look = NULL, *at_up = NULL, *at_loc = NULL;
+	struct ast *at_look = NULL, *at_up = NULL, *at_loc = NULL, *at_focus = NULL;
+	bool aperture_ok = true, focus_ok = true;
 	char nb[32];
 	c->given = true;
 	c->span = c->resolution_span = s->u.stmt.kw_span;
@@ -37,6 +70,8 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		case KW_WIDTH:
 			positive_of(ev, arg0(it), "width", false, &c->view_width);
 			break;
+		case KW_APERTURE: aperture_ok = positive_of(ev, arg0(it), "aperture", true, &c->aperture); break;
+		case KW_FOCAL_POINT: at_focus = it; focus_ok = vec_of(ev, arg0(it), c->focal_point); break;
 		case KW_RESOLUTION:
 			c->resolution_span = it->span;
 			/* both, so that a bad width does not hide a bad height */
@@ -56,19 +91,16 @@ static void eval_camera(struct evaluator *ev, struct ast *s)
 		eval_error(ev, at_look ? at_look : at_loc ? at_loc : s, "look_at is the same point as location");
 		return;
 	}
+	if (focus_ok)
+		eval_focus(ev, c, at_focus, aperture_ok, dir);
 	if (is_zero(c->up)) {
 		eval_error(ev, at_up ? at_up : s, "up must not be a zero vector");
 		return;
 	}
-	/* the sine of the angle between unit vectors: scale-free, also for an up or a
-	 * direction of 1e-310 whose products would underflow */
-	double u[3], d[3], side[3];
-	unit(c->up, u);
-	unit(dir, d);
-	cross(u, d, side);
-	if (norm(side) <= 1e-12 && at_up)
+	bool flat = parallel(c->up, dir);
+	if (flat && at_up)
 		eval_error(ev, at_up, "up is parallel to the viewing direction");
-	else if (norm(side) <= 1e-12) /* the default up: blame the direction */
+	else if (flat) /* the default up: blame the direction */
 		eval_error(ev, at_look ? at_look : at_loc ? at_loc : s,
 		           "the viewing direction is parallel to the default up <0, 1, 0>; give the camera an 'up'");
 }
@@ -120,6 +152,46 @@ static struct ast *eval_spotlight(struct evaluator *ev, struct ast *sp, struct l
 	return aim;
 }
 
+/* area { AXIS1, AXIS2, N1, N2  [jitter] [circular] [orient] } (item ar) into l: counts of
+ * 1 to 64, and axes that span the lights (orient turns them to face each point, so there
+ * only their lengths matter). */
+static void eval_area(struct evaluator *ev, struct ast *ar, struct light_desc *l)
+{
+	struct ast_list *args = &ar->u.item.block->args, *items = &ar->u.item.block->items;
+	struct ast *circular = NULL;
+	bool axes = true, sized = true;
+	l->area = true;
+	for (int k = 0; k < 2; k++) {
+		double n;
+		axes &= vec_of(ev, args->v[k], l->area_axis[k]);
+		if (whole_of(ev, args->v[2 + k], 1, 64, k ? "an area light's N2" : "an area light's N1", &n))
+			l->area_size[k] = (int)n;
+		else
+			sized = false;
+	}
+	for (size_t i = 0; i < items->n; i++)
+		switch (items->v[i]->u.item.kw) {
+		case KW_JITTER: l->area_jitter = true; break;
+		case KW_CIRCULAR: l->area_circular = true; circular = items->v[i]; break;
+		case KW_ORIENT: l->area_orient = true; break;
+		}
+	if (!sized)
+		return;
+	const int *n = l->area_size;
+	for (int k = 0; axes && k < 2; k++)
+		if (n[k] > 1 && is_zero(l->area_axis[k])) {
+			eval_error(ev, args->v[k], "AXIS%d of an area light is a zero vector, but N%d is %d: its lights would "
+			           "sit at one point", k + 1, k + 1, n[k]);
+			axes = false;
+		}
+	if (axes && n[0] > 1 && n[1] > 1 && !l->area_orient && parallel(l->area_axis[0], l->area_axis[1]))
+		eval_error(ev, args->v[1], "the axes of an area light are parallel: with N1 and N2 over 1 they must span "
+		           "a surface");
+	if (circular && (n[0] < 2 || n[1] < 2))
+		eval_error(ev, circular, "'circular' needs N1 and N2 of 2 or more (POV-Ray divides by N - 1), not %d",
+		           n[0] < 2 ? n[0] : n[1]);
+}
+
 static void eval_light(struct evaluator *ev, struct ast *s)
 {
 	struct light_desc l = { .color = { 1, 1, 1 }, .intensity = 1, .span = s->u.stmt.kw_span };
@@ -145,6 +217,7 @@ static void eval_light(struct evaluator *ev, struct ast *s)
 			positive_of(ev, arg0(it), "fade_power", true, &l.fade_power);
 			break;
 		case KW_SPOTLIGHT: aim = eval_spotlight(ev, it, &l); break;
+		case KW_AREA: eval_area(ev, it, &l); break;
 		}
 	}
 	if (aim && placed && l.point_at[0] == l.vec[0] && l.point_at[1] == l.vec[1] && l.point_at[2] == l.vec[2])

@@ -23,6 +23,7 @@ static const char *const names[KW_COUNT_ALL] = {
 	"interpolate", "once", "normal", "uvs", "fade_distance", "fade_power",
 	"spotlight", "point_at", "falloff", "tightness",
 	"orthographic", "width", "distance",
+	"area", "jitter", "circular", "orient", "aperture", "focal_point",
 };
 
 enum { TABLE_SIZE = 512 }; /* a power of two, over five times the keyword count */

@@ -24,6 +24,7 @@ enum kw {
 	KW_INTERPOLATE, KW_ONCE, KW_NORMAL, KW_UVS, KW_FADE_DISTANCE, KW_FADE_POWER,
 	KW_SPOTLIGHT, KW_POINT_AT, KW_FALLOFF, KW_TIGHTNESS,
 	KW_ORTHOGRAPHIC, KW_WIDTH, KW_DISTANCE,
+	KW_AREA, KW_JITTER, KW_CIRCULAR, KW_ORIENT, KW_APERTURE, KW_FOCAL_POINT,
 	KW_COUNT_ALL
 };
 
@@ -37,7 +38,7 @@ static inline bool kw_is_object(int k)
 static inline bool kw_is_flag(int k)
 {
 	return k == KW_SHADOWLESS || k == KW_FRESNEL || k == KW_SMOOTH || k == KW_OPEN || k == KW_INVERSE || k == KW_ONCE ||
-	       k == KW_ORTHOGRAPHIC;
+	       k == KW_ORTHOGRAPHIC || k == KW_JITTER || k == KW_CIRCULAR || k == KW_ORIENT;
 }
 
 static inline bool kw_is_csg(int k)

@@ -1,4 +1,4 @@
-/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5, 9, 10 and 11) -> AST.
+/* parser.y: the grammar of the scene language (LANGUAGE.md sections 2, 4, 5, 9, 10, 11 and 12) -> AST.
  * Every statement starts with a keyword. Blocks are generic (positional arguments, then
  * attribute items) so that check.c, not the grammar, knows which attribute belongs where
  * and can say "unknown attribute 'radus' in sphere; did you mean 'radius'?". A CSG block
@@ -85,6 +85,7 @@ static void yyerror(YYLTYPE *loc, yyscan_t scanner, struct lang_ctx *ctx, const 
 %token <kw> PIGMENT_KW "'pattern' or 'image'"  /* right after diffuse: diffuse pattern { ITEMS } */
 /* normal { ITEMS }, spotlight { ITEMS }: apart from ATTR, whose '{' opens a list */
 %token <kw> BLOCK_ATTR "'normal' or 'spotlight'"
+%token <kw> ARGS_ATTR "'area'"         /* area { ARGS ITEMS }: a block attribute with positional arguments */
 %token <kw> MATERIAL "'material'" MESH "'mesh'" SAMPLES "'samples'" MAX_DEPTH "'max_depth'"
 %token <kw> LET "'let'" INCLUDE "'include'" FOR "'for'" IN "'in'"
 %token DOTDOT "'..'"
@@ -266,6 +267,8 @@ attr_item:
 |	MATERIAL items_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 |	BLOCK_ATTR opt_args                 { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
 |	BLOCK_ATTR items_block              { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
+|	ARGS_ATTR opt_args                  { $$ = ast_item(A, @$, $1, NULL, @1, $2, NULL); }
+|	ARGS_ATTR args_block                { $$ = ast_item(A, @$, $1, NULL, @1, no_list, $2); }
 	/* diffuse pattern { ... } or image { "FILE" ... }: diffuse's one argument is an item
 	 * that holds the block; an image's file comes first, as a mesh's does */
 |	ATTR PIGMENT_KW mesh_block          { $$ = ast_item(A, @$, $1, NULL, @1, list1(ctx, ast_item(A, span_join(@2, @3), $2,
@@ -285,6 +288,7 @@ binder:
 |	CSG_KW                              { $$ = reserved(ctx, @1); }
 |	MATERIAL                            { $$ = reserved(ctx, @1); }
 |	BLOCK_ATTR                          { $$ = reserved(ctx, @1); }
+|	ARGS_ATTR                           { $$ = reserved(ctx, @1); }
 |	MESH                                { $$ = reserved(ctx, @1); }
 |	SAMPLES                             { $$ = reserved(ctx, @1); }
 |	MAX_DEPTH                           { $$ = reserved(ctx, @1); }
@@ -303,7 +307,7 @@ soup:
 ;
 soup_token:
 	NUMBER {} | STRING {} | IDENT {} | NAME_VALUE {} | ATTR {} | ITEMS_KW {} | ARGS_KW {} | CSG_KW {}
-|	MATERIAL {} | BLOCK_ATTR {} | PIGMENT_KW {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
+|	MATERIAL {} | BLOCK_ATTR {} | ARGS_ATTR {} | PIGMENT_KW {} | MESH {} | SAMPLES {} | MAX_DEPTH {} | LET {} | INCLUDE {} | FOR {} | IN {}
 |	DOTDOT | BAD | POV_COLOUR | '(' | ')' | '<' | '>' | ',' | '.' | '=' | '+' | '-' | '*' | '/'
 |	IF | ELSE | DEF | AND | OR | NOT | BOOL {} | EQ | NE | LT | GT | LE | GE | '?' | ':' | '[' | ']'
 ;
@@ -486,6 +490,7 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 	case YYSYMBOL_IDENT: case YYSYMBOL_NAME_VALUE: return value || attribute ? NULL : "a name";
 	case YYSYMBOL_MATERIAL: return attribute ? NULL : "'material'";
 	case YYSYMBOL_BLOCK_ATTR: return attribute ? NULL : "'normal' or 'spotlight'";
+	case YYSYMBOL_ARGS_ATTR: return attribute ? NULL : "'area'";
 	case YYSYMBOL_PIGMENT_KW: return NULL; /* only ever after diffuse, where a value is due */
 	case YYSYMBOL_STRING: return value ? NULL : "a string"; /* a string where a value may stand is rare */
 	case YYSYMBOL_POV_COLOUR: case YYSYMBOL_BAD: return NULL;
@@ -503,22 +508,29 @@ static const char *expected_name(yysymbol_kind_t k, bool value, bool attribute)
 
 /* "unexpected 'x'; expected A, B or C", and a note at the bracket left open when the
  * parser wanted its closer. A BAD token was reported by the lexer already. */
+/* Whether the word right before the brace at brace (blanks between) is kw. */
+static bool brace_of(const struct lang_ctx *ctx, struct span brace, const char *kw)
+{
+	const char *text = ctx->src->text;
+	uint32_t i = brace.start - ctx->src->base;
+	while (i > 0 && strchr(" \t\r\n", text[i - 1]))
+		i--;
+	uint32_t word = i;
+	while (word > 0 && (isalnum((unsigned char)text[word - 1]) || text[word - 1] == '_'))
+		word--;
+	return i - word == strlen(kw) && memcmp(text + word, kw, i - word) == 0;
+}
+
 /* POV-Ray's light_source { <0, 5, 0> ... } as scn's light { <0, 5, 0> }: the hint, in buf,
  * for the vector at vec that opens the block at brace. */
 static void light_position_hint(const struct lang_ctx *ctx, struct span brace, struct span vec, char *buf, size_t size)
 {
 	const char *text = ctx->src->text;
 	uint32_t open = brace.start - ctx->src->base, at = vec.start - ctx->src->base;
-	uint32_t i = open;
-	while (i > 0 && strchr(" \t\r\n", text[i - 1]))
-		i--;
-	uint32_t word = i;
-	while (word > 0 && (isalnum((unsigned char)text[word - 1]) || text[word - 1] == '_'))
-		word--;
 	bool first = true;
 	for (uint32_t j = open + 1; j < at; j++)
 		first &= strchr(" \t\r\n", text[j]) != NULL;
-	if (!first || i - word != 5 || memcmp(text + word, "light", 5) != 0)
+	if (!first || !brace_of(ctx, brace, "light"))
 		return;
 	uint32_t end = at;
 	while (end < ctx->src->len && end - at < 60 && text[end] != '>' && text[end] >= ' ' && text[end] < 0x7f)
@@ -590,7 +602,7 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 		name |= expected[i] == YYSYMBOL_IDENT;
 	}
 	bool keyword = got == YYSYMBOL_ATTR || got == YYSYMBOL_ITEMS_KW || got == YYSYMBOL_ARGS_KW || got == YYSYMBOL_CSG_KW
-	            || got == YYSYMBOL_MATERIAL || got == YYSYMBOL_BLOCK_ATTR || got == YYSYMBOL_PIGMENT_KW
+	            || got == YYSYMBOL_MATERIAL || got == YYSYMBOL_BLOCK_ATTR || got == YYSYMBOL_ARGS_ATTR || got == YYSYMBOL_PIGMENT_KW
 	            || got == YYSYMBOL_MESH || got == YYSYMBOL_SAMPLES || got == YYSYMBOL_MAX_DEPTH || got == YYSYMBOL_LET
 	            || got == YYSYMBOL_INCLUDE || got == YYSYMBOL_FOR || got == YYSYMBOL_IN || got == YYSYMBOL_IF
 	            || got == YYSYMBOL_ELSE || got == YYSYMBOL_DEF || got == YYSYMBOL_AND || got == YYSYMBOL_OR
@@ -632,6 +644,9 @@ static int yyreport_syntax_error(const yypcontext_t *pc, yyscan_t scanner, struc
 		light_position_hint(ctx, ctx->open[k - 1].sp, at, hint, sizeof hint);
 	else if (k > 0 && comparison && ctx->open[k - 1].ch == '<')
 		snprintf(hint, sizeof hint, " (inside < > a comparison goes in brackets: <(a > b) ? 1 : 0, 0, 0>)");
+	else if (k > 0 && ctx->open[k - 1].ch == '{' && value && !attribute && brace_of(ctx, ctx->open[k - 1].sp, "area"))
+		snprintf(hint, sizeof hint, " (an area starts with its four values, then its flags: "
+		         "area { AXIS1, AXIS2, N1, N2 [jitter] [circular] [orient] })");
 	else if (k > 0 && ctx->open[k - 1].ch == '{' && attribute && after_name(ctx, at))
 		snprintf(hint, sizeof hint, " (in a block, a value that starts with a name and goes on goes in brackets: "
 		         "mesh { (name + \".obj\") })");

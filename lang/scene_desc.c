@@ -53,6 +53,7 @@ void scene_desc_init(struct scene_desc *s)
 	struct camera_desc *c = &s->camera;
 	set3(c->location, 0, 0, -5);
 	set3(c->look_at, 0, 0, 0);
+	set3(c->focal_point, 0, 0, 0);  /* look_at's */
 	set3(c->up, 0, 1, 0);
 	c->fov = 60;
 	c->width = 640;
@@ -355,6 +356,10 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 	} else {
 		field_num(out, "fov", c->fov);
 	}
+	if (c->aperture > 0) {
+		field_num(out, "aperture", c->aperture);
+		field_vec(out, "focal_point", c->focal_point);
+	}
 	fprintf(out, " resolution %d %d%s\n", c->width, c->height, c->given ? "" : " (default)");
 
 	fprintf(out, "max_depth %d\n", s->max_depth);
@@ -410,6 +415,13 @@ void scene_desc_dump(const struct scene_desc *s, FILE *out)
 			field_num(out, "radius", l->radius);
 			field_num(out, "falloff", l->falloff);
 			field_num(out, "tightness", l->tightness);
+		}
+		if (l->area) {
+			fputs(" area", out);
+			field_vec(out, "axis1", l->area_axis[0]);
+			field_vec(out, "axis2", l->area_axis[1]);
+			fprintf(out, " size %d %d%s%s%s", l->area_size[0], l->area_size[1], l->area_jitter ? " jitter" : "",
+			        l->area_circular ? " circular" : "", l->area_orient ? " orient" : "");
 		}
 		fputs(l->shadowless ? " shadowless\n" : "\n", out);
 	}

@@ -31,6 +31,10 @@ TESTS += tests/parse/light_fade.scn
 EXTRA_DIST += tests/parse/light_fade.scn tests/parse/light_fade.dump tests/parse/light_fade.err
 TESTS += tests/parse/spotlight.scn
 EXTRA_DIST += tests/parse/spotlight.scn tests/parse/spotlight.dump
+TESTS += tests/parse/area_light.scn tests/parse/focal_blur.scn tests/parse/focal_point_alone.scn
+EXTRA_DIST += tests/parse/area_light.scn tests/parse/area_light.dump tests/parse/focal_blur.scn \
+	tests/parse/focal_blur.dump tests/parse/focal_point_alone.scn tests/parse/focal_point_alone.dump \
+	tests/parse/focal_point_alone.err
 TESTS += tests/parse/like.scn
 EXTRA_DIST += tests/parse/like.scn tests/parse/like.dump
 TESTS += tests/parse/material.scn

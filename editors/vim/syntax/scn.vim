@@ -23,6 +23,7 @@ syn keyword scnAttribute inside_vector frequency phase turbulence octaves omega 
 syn keyword scnAttribute interpolate once normal uvs fade_distance fade_power spotlight
 syn keyword scnAttribute point_at falloff tightness
 syn keyword scnAttribute orthographic width distance
+syn keyword scnAttribute area jitter circular orient aperture focal_point
 syn keyword scnOperator and or not
 " the builtins are names, and true and false values: a '<' after one compares
 syn keyword scnFunction sqrt exp log abs floor ceil sin cos tan asin acos radians degrees
