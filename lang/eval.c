@@ -4,6 +4,7 @@
  * Types were settled by check.c; this file only computes. */
 #include "eval_internal.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -158,7 +159,7 @@ static struct ast *eval_spotlight(struct evaluator *ev, struct ast *sp, struct l
 static void eval_area(struct evaluator *ev, struct ast *ar, struct light_desc *l)
 {
 	struct ast_list *args = &ar->u.item.block->args, *items = &ar->u.item.block->items;
-	struct ast *circular = NULL;
+	struct ast *circular = NULL, *orient = NULL;
 	bool axes = true, sized = true;
 	l->area = true;
 	for (int k = 0; k < 2; k++) {
@@ -173,7 +174,7 @@ static void eval_area(struct evaluator *ev, struct ast *ar, struct light_desc *l
 		switch (items->v[i]->u.item.kw) {
 		case KW_JITTER: l->area_jitter = true; break;
 		case KW_CIRCULAR: l->area_circular = true; circular = items->v[i]; break;
-		case KW_ORIENT: l->area_orient = true; break;
+		case KW_ORIENT: l->area_orient = true; orient = items->v[i]; break;
 		}
 	if (!sized)
 		return;
@@ -190,6 +191,22 @@ static void eval_area(struct evaluator *ev, struct ast *ar, struct light_desc *l
 	if (circular && (n[0] < 2 || n[1] < 2))
 		eval_error(ev, circular, "'circular' needs N1 and N2 of 2 or more (POV-Ray divides by N - 1), not %d",
 		           n[0] < 2 ? n[0] : n[1]);
+	else if (orient && (n[0] < 2 || n[1] < 2))
+		eval_error(ev, orient, "'orient' makes the light circular, which needs N1 and N2 of 2 or more, not %d",
+		           n[0] < 2 ? n[0] : n[1]);
+	else if (orient && axes) {
+		/* POV-Ray's own warnings: an oriented light is a disc, square to each lit point */
+		double len[2];
+		for (int k = 0; k < 2; k++)
+			len[k] = sqrt(l->area_axis[k][0] * l->area_axis[k][0] + l->area_axis[k][1] * l->area_axis[k][1] +
+			              l->area_axis[k][2] * l->area_axis[k][2]);
+		if (fabs(len[0] - len[1]) > 1e-9 * fmax(len[0], len[1]))
+			diag_warning(ev->diag, orient->u.item.name_span, "an oriented area light takes AXIS1's length for both "
+			             "axes: AXIS2's is ignored");
+		if (n[0] != n[1])
+			diag_warning(ev->diag, orient->u.item.name_span, "an oriented area light turns with each lit point: "
+			             "give it as many points on both axes (N1 %d, N2 %d)", n[0], n[1]);
+	}
 }
 
 static void eval_light(struct evaluator *ev, struct ast *s)

@@ -116,9 +116,9 @@ EXTRA_DIST += tests/errors/light_fade.scn tests/errors/light_fade.err
 TESTS += tests/errors/spotlight.scn tests/errors/spotlight_values.scn
 EXTRA_DIST += tests/errors/spotlight.scn tests/errors/spotlight.err tests/errors/spotlight_values.scn \
 	tests/errors/spotlight_values.err
-TESTS += tests/errors/area.scn tests/errors/area_values.scn tests/errors/area_syntax.scn
+TESTS += tests/errors/area.scn tests/errors/area_values.scn tests/errors/area_syntax.scn tests/errors/area_orient.scn
 EXTRA_DIST += tests/errors/area.scn tests/errors/area.err tests/errors/area_values.scn tests/errors/area_values.err \
-	tests/errors/area_syntax.scn tests/errors/area_syntax.err
+	tests/errors/area_syntax.scn tests/errors/area_syntax.err tests/errors/area_orient.scn tests/errors/area_orient.err
 TESTS += tests/errors/camera_focus.scn tests/errors/camera_focus_beside.scn
 EXTRA_DIST += tests/errors/camera_focus.scn tests/errors/camera_focus.err tests/errors/camera_focus_beside.scn \
 	tests/errors/camera_focus_beside.err

@@ -79,7 +79,9 @@ EXTREME_TESTS = \
 	tests/extreme/torus_far_1e6.scn \
 	tests/extreme/torus_far_1e9.scn \
 	tests/extreme/fade_extremes.scn \
-	tests/extreme/spot_hard_edge.scn
+	tests/extreme/spot_hard_edge.scn \
+	tests/extreme/fog_light_inside.scn \
+	tests/extreme/area_straddle_1e-6.scn
 TESTS += $(EXTREME_TESTS) tests/extreme/accel-grid.sh
 EXTREME_EXPECT = \
 	tests/extreme/axis_rays_neg.expect \
@@ -145,7 +147,9 @@ EXTREME_EXPECT = \
 	tests/extreme/texture_overflow.expect \
 	tests/extreme/texture_extremes.expect \
 	tests/extreme/fade_extremes.expect \
-	tests/extreme/spot_hard_edge.expect
+	tests/extreme/spot_hard_edge.expect \
+	tests/extreme/fog_light_inside.expect \
+	tests/extreme/area_straddle_1e-6.expect
 EXTREME_REFUSED = tests/extreme/huge_mesh.err tests/extreme/huge_sphere.err tests/extreme/literal_1e400.err \
 	tests/extreme/nonfinite_loop.err tests/extreme/overflow.err
 EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
@@ -154,6 +158,7 @@ EXTRA_DIST += $(EXTREME_TESTS) $(EXTREME_EXPECT) $(EXTREME_REFUSED) \
 	tests/extreme/axis_grid.inc tests/extreme/subnormal_dirs.inc \
 	tests/extreme/terminator.inc tests/extreme/icosphere.inc tests/extreme/terminator_twin.scn \
 	tests/extreme/grazing_sphere_twin.scn \
+	tests/extreme/area_straddle_twin.scn \
 	tests/extreme/ground_plane.scn \
 	tests/extreme/no_light.scn \
 	tests/extreme/subnormal_dirs_twin.scn \

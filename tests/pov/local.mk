@@ -40,6 +40,8 @@ POV_TESTS = \
 	tests/pov/grid9.scn \
 	tests/pov/lights_coloured.scn \
 	tests/pov/lights_directional.scn \
+	tests/pov/lights_area.scn \
+	tests/pov/lights_area_circular.scn \
 	tests/pov/lights_fade.scn \
 	tests/pov/lights_shadowless.scn \
 	tests/pov/lights_spotlight.scn \
