@@ -72,8 +72,8 @@ POV_TESTS = \
 	tests/pov/transmit_ior1.scn \
 	tests/pov/triangles.scn \
 	tests/pov/whitted.scn
-TESTS += $(POV_TESTS)
-EXTRA_DIST += $(POV_TESTS) tests/pov/run-pov tests/pov/mirrors.inc tests/pov/palette.inc \
+TESTS += $(POV_TESTS) tests/pov/statistical.sh
+EXTRA_DIST += $(POV_TESTS) tests/pov/statistical.sh tests/pov/run-pov tests/pov/mirrors.inc tests/pov/palette.inc \
 	tests/pov/octa.obj tests/pov/env.exr
 # The surfaces of LANGUAGE.md section 11 (patterns, image maps, mesh files' materials): their
 # small textures are written by tests/pov/surface_images.py.
