@@ -67,16 +67,58 @@ struct vec3 light_area_offset(const struct area_light *a, const struct vec3 axes
 	if (a->circular) {
 		/* POV-Ray's: onto [-0.5, 0.5] (and 0.001 off centre, which keeps the middle
 		 * point off 0 / 0), then each square shell of the grid pulled in onto a circle */
-		u = u / (a->size[0] - 1) - 0.5 + 0.001;
-		v = v / (a->size[1] - 1) - 0.5 + 0.001;
+		u = u * a->inv_span[0] - 0.5 + 0.001;
+		v = v * a->inv_span[1] - 0.5 + 0.001;
 		double r = sqrt(u * u + v * v);
 		double k = r > 0 ? fmax(fabs(u), fabs(v)) / r : 1;  /* 0 only for a jittered point */
 		return vadd(vscale(axes[0], u * k), vscale(axes[1], v * k));
 	}
 	struct vec3 off = v3s(0);
 	if (a->size[0] > 1)
-		off = vscale(axes[0], u / (a->size[0] - 1) - 0.5);
+		off = vscale(axes[0], u * a->inv_span[0] - 0.5);
 	if (a->size[1] > 1)
-		off = vadd(off, vscale(axes[1], v / (a->size[1] - 1) - 0.5));
+		off = vadd(off, vscale(axes[1], v * a->inv_span[1] - 0.5));
 	return off;
+}
+
+/* Adds the plane with normal n (any length) through point at to region, turned so that
+ * inside lies on the side of `inside`; nothing when n is too short to have a direction. */
+static bool add_plane(struct bvh_region *region, struct vec3 n, struct vec3 at, struct vec3 inside, double margin)
+{
+	double len = vlen(n);
+	if (!(len > 0))
+		return false;
+	n = vscale(n, 1 / len);
+	if (vdot(n, vsub(inside, at)) > 0)
+		n = vneg(n);
+	double *p = region->plane[region->nplanes++];
+	p[0] = n.x;
+	p[1] = n.y;
+	p[2] = n.z;
+	p[3] = vdot(n, at) + margin;
+	return true;
+}
+
+bool light_area_region(const struct area_light *a, const struct vec3 axes[2], struct vec3 centre, struct vec3 apex,
+                       double margin, struct bvh_region *region)
+{
+	if (a->size[0] < 2 || a->size[1] < 2)
+		return false;
+	/* how far the test points reach along each axis, in its lengths: half of it, POV-Ray's
+	 * 0.001 of circular, and half a cell more when jittered */
+	struct vec3 half[2];
+	for (int k = 0; k < 2; k++)
+		half[k] = vscale(axes[k], 0.501 + (a->jitter ? 0.5 * a->inv_span[k] : 0));
+	struct vec3 corner[4] = {
+		vsub(vsub(centre, half[0]), half[1]), vsub(vadd(centre, half[0]), half[1]),
+		vadd(vadd(centre, half[0]), half[1]), vadd(vsub(centre, half[0]), half[1]),
+	};
+	region->nplanes = 0;
+	for (int i = 0; i < 4; i++) {
+		struct vec3 n = vcross(vsub(corner[i], apex), vsub(corner[(i + 1) % 4], apex));
+		if (!add_plane(region, n, apex, centre, margin))
+			return false;
+	}
+	/* and the light's plane, where every test ends */
+	return add_plane(region, vcross(axes[0], axes[1]), centre, apex, margin);
 }

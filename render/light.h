@@ -4,6 +4,7 @@
 #ifndef SCN_LIGHT_H
 #define SCN_LIGHT_H
 
+#include "bvh.h"
 #include "scene.h"
 
 /* The spotlight factor of li for unit l from the lit point towards the light. */
@@ -24,5 +25,13 @@ void light_area_axes(const struct area_light *a, struct vec3 l, struct vec3 axes
 /* The offset from the light's position of the test point at grid coordinates (u, v):
  * whole numbers for the grid, plus an offset in (-0.5, 0.5) when jittered. */
 struct vec3 light_area_offset(const struct area_light *a, const struct vec3 axes[2], double u, double v);
+
+/* The convex region (a pyramid from apex to the light's extent, jitter included, and the
+ * light's plane) that holds every shadow test of a from apex, with axes as
+ * light_area_axes gives them: widened by margin, which must cover the distance the tests'
+ * origins move off apex. False when the light is a line or a point, whose region would
+ * not be bounded. */
+bool light_area_region(const struct area_light *a, const struct vec3 axes[2], struct vec3 centre, struct vec3 apex,
+                       double margin, struct bvh_region *region);
 
 #endif

@@ -403,6 +403,7 @@ static int32_t lower_area_light(struct scene *out, const struct light_desc *l)
 	for (int k = 0; k < 2; k++) {
 		a->axis[k] = v3a(l->area_axis[k]);
 		a->size[k] = l->area_size[k];
+		a->inv_span[k] = a->size[k] > 1 ? 1.0 / (a->size[k] - 1) : 0;
 		light_area_weights(a->size[k], a->weight[k]);
 	}
 	a->jitter = l->area_jitter;

@@ -47,6 +47,7 @@ struct area_light {
 	bool jitter;                   /* each test point at random in its cell, per sample */
 	bool circular;                 /* the grid pulled in onto a disc */
 	bool orient;                   /* turned to face each lit point (and so circular) */
+	double inv_span[2];            /* 1 / (size - 1), 0 for a size of 1 (no division per test) */
 	double weight[2][AREA_MAX];    /* along each axis, POV-Ray's recursive corner weights:
 	                                * the test at (u, v) weighs weight[0][u] * weight[1][v] */
 };

@@ -44,16 +44,20 @@ static inline uint32_t sobol_y(uint32_t i)
 
 /* A nested uniform (Owen) scramble of a 32-bit fraction, by Laine and Karras's hash in
  * reversed bit order (Burley, "Practical hash-based Owen scrambling", JCGT 2020): each
- * bit is flipped by a function of the bits above it only. */
-static inline uint32_t owen_scramble(uint32_t x, uint32_t seed)
+ * bit is flipped by a function of the bits above it only. The first takes the fraction's
+ * bits already reversed, for a caller that scrambles one point many ways. */
+static inline uint32_t owen_scramble_reversed(uint32_t reversed, uint32_t seed)
 {
-	x = reverse32(x);
-	x += seed;
+	uint32_t x = reversed + seed;
 	x ^= x * 0x6c50b47cu;
 	x ^= x * 0xb82f1e52u;
 	x ^= x * 0xc7afe638u;
 	x ^= x * 0x8d22f6e6u;
 	return reverse32(x);
+}
+static inline uint32_t owen_scramble(uint32_t x, uint32_t seed)
+{
+	return owen_scramble_reversed(reverse32(x), seed);
 }
 
 #endif

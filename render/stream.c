@@ -47,8 +47,8 @@ void stream_dim(const struct sample_stream *s, uint64_t dim, struct stream_dim *
 	}
 	d->key = mix64(s->key + (dim + 1) * GOLDEN);
 	uint32_t j = s->count > 1 ? permute(s->index, s->count, mix64(d->key)) : 0;
-	d->x = reverse32(j);
-	d->y = sobol_y(j);
+	d->x = j;                      /* both reversed, as owen_scramble_reversed takes them */
+	d->y = reverse32(sobol_y(j));
 }
 
 void stream_point(const struct stream_dim *d, uint32_t cell, double *u, double *v)
@@ -59,8 +59,8 @@ void stream_point(const struct stream_dim *d, uint32_t cell, double *u, double *
 		*v = jitter32((uint32_t)(seeds >> 32));
 		return;
 	}
-	*u = jitter32(owen_scramble(d->x, (uint32_t)seeds));
-	*v = jitter32(owen_scramble(d->y, (uint32_t)(seeds >> 32)));
+	*u = jitter32(owen_scramble_reversed(d->x, (uint32_t)seeds));
+	*v = jitter32(owen_scramble_reversed(d->y, (uint32_t)(seeds >> 32)));
 }
 
 void stream_disc(double u, double v, double *x, double *y)

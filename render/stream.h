@@ -21,7 +21,7 @@ struct sample_stream {
 /* A dimension of a stream, fixed for its sample: where its Sobol set stands. */
 struct stream_dim {
 	uint64_t key;
-	uint32_t x, y;                 /* the Sobol point's bits, before scrambling */
+	uint32_t x, y;                 /* the Sobol point's bits, before scrambling, reversed */
 	bool independent;
 };
 

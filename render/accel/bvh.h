@@ -36,6 +36,28 @@ bool bvh_intersect(const struct bvh *b, const struct geometry *geo, const struct
  * surface crossed (POV-Ray's filtered shadow). Stops early once it is black. */
 struct vec3 bvh_transmittance(const struct bvh *b, const struct geometry *geo, const struct ray *r, double tmax);
 
+/* A convex region, as the planes that bound it: x is inside when dot(n, x) <= d for every
+ * plane (n, d), each row n.x, n.y, n.z, d. */
+struct bvh_region {
+	double plane[6][4];
+	int nplanes;
+};
+/* A leaf of the tree, as the traversal names it, and its box. */
+struct bvh_leaf {
+	float lo[3], hi[3];
+	uint32_t index, count;
+};
+/* The leaves whose boxes meet region, for many shadow rays that all stay inside it (an
+ * area light's, from one point): at most cap of them into leaves, and their number; -1
+ * when there are more. A segment inside region meets no primitive outside them. */
+int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_leaf *leaves, int cap);
+/* bvh_transmittance of a ray that stays inside the region leaves[0 .. n) were gathered
+ * for, which it walks in place of the tree. The same filters multiply, in the leaves'
+ * order, which puts first the leaf that last turned a ray black: its neighbour rays are
+ * often blocked by the same object. */
+struct vec3 bvh_transmittance_among(const struct bvh *b, const struct geometry *geo, const struct ray *r, double tmax,
+                                    struct bvh_leaf *leaves, int n);
+
 /* The tree's shape, for --stats and the tests: every node (the wide interior ones and
  * the leaves), the interior ones alone, the triangle packets, and the depth. */
 struct bvh_shape {

@@ -363,3 +363,89 @@ struct vec3 bvh_transmittance(const struct bvh *b, const struct geometry *geo, c
 {
 	return b->big ? transmittance_big(b, geo, r, tmax) : transmittance(b, geo, r, tmax, false);
 }
+
+/* Whether the box lo..hi lies wholly outside one of region's planes. */
+static bool box_outside(const float lo[3], const float hi[3], const struct bvh_region *region)
+{
+	for (int k = 0; k < region->nplanes; k++) {
+		const double *p = region->plane[k];
+		/* the box's corner farthest inside the plane */
+		double v = p[0] * (p[0] > 0 ? lo[0] : hi[0]) + p[1] * (p[1] > 0 ? lo[1] : hi[1]) +
+		           p[2] * (p[2] > 0 ? lo[2] : hi[2]);
+		if (v > p[3])
+			return true;
+	}
+	return false;
+}
+
+int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_leaf *leaves, int cap)
+{
+	if (!b->nprims)
+		return 0;
+	if (box_outside(b->root.box, b->root.box + 3, region))
+		return 0;
+	int n = 0;
+	if (b->root.count) {
+		const float *bx = b->root.box;
+		leaves[n++] = (struct bvh_leaf){ { bx[0], bx[1], bx[2] }, { bx[3], bx[4], bx[5] }, b->root.index, b->root.count };
+		return n;
+	}
+	uint32_t stack[(WIDTH - 1) * MAX_DEPTH + WIDTH];
+	int sp = 0;
+	stack[sp++] = b->root.index;
+	while (sp > 0) {
+		const struct bvh_node *node = &b->nodes[stack[--sp]];
+		for (int c = 0; c < WIDTH; c++) {
+			float lo[3] = { node->box[0][c], node->box[1][c], node->box[2][c] };
+			float hi[3] = { node->box[3][c], node->box[4][c], node->box[5][c] };
+			if (!(lo[0] <= hi[0]) || box_outside(lo, hi, region))
+				continue; /* an empty slot, or out of the region */
+			if (!node->count[c]) {
+				stack[sp++] = node->index[c];
+			} else {
+				if (n == cap)
+					return -1;
+				leaves[n++] = (struct bvh_leaf){ { lo[0], lo[1], lo[2] }, { hi[0], hi[1], hi[2] }, node->index[c],
+				                                 node->count[c] };
+			}
+		}
+	}
+	return n;
+}
+
+struct vec3 bvh_transmittance_among(const struct bvh *b, const struct geometry *geo, const struct ray *r, double tmax,
+                                    struct bvh_leaf *leaves, int n)
+{
+	struct shadow_query q = { .geo = geo, .r = r, .pass = shape_planes_filter(geo, r, tmax) };
+	if (vzero(q.pass) || n == 0)
+		return q.pass;
+	shape_triangle_ray(geo, r, &q.tr);
+	/* each leaf's box first, in double: the slab test, widened by a relative 2^-20 (the
+	 * boxes hold their primitives with room to spare; this only keeps rounding from
+	 * losing a leaf whose box the ray grazes) */
+	double inv[3] = { 1 / r->d.x, 1 / r->d.y, 1 / r->d.z }, o[3] = { r->o.x, r->o.y, r->o.z };
+	for (int i = 0; i < n; i++) {
+		double t0 = 0, t1 = tmax;
+		for (int k = 0; k < 3; k++) {
+			double pad = 0x1p-20 * (fabs(leaves[i].lo[k]) + fabs(leaves[i].hi[k])) + FLT_TRUE_MIN;
+			double a = (leaves[i].lo[k] - pad - o[k]) * inv[k], c = (leaves[i].hi[k] + pad - o[k]) * inv[k];
+			if (inv[k] < 0) {
+				double swap = a;
+				a = c;
+				c = swap;
+			}
+			/* NaN (0 * inf: the origin on a slab, d parallel to it) keeps the bound */
+			t0 = a > t0 ? a : t0;
+			t1 = c < t1 ? c : t1;
+		}
+		if (!(t0 <= t1 * (1 + 0x1p-20)))
+			continue;
+		if (shadow_leaf(b, leaves[i].index, leaves[i].count, &q, &tmax)) {
+			struct bvh_leaf blocker = leaves[i];
+			leaves[i] = leaves[0];
+			leaves[0] = blocker;
+			break;
+		}
+	}
+	return q.pass;
+}

@@ -72,7 +72,7 @@ static void test_weights(void)
 
 static void test_offsets(void)
 {
-	struct area_light a = { .axis = { { 2, 0, 0 }, { 0, 0, 4 } }, .size = { 3, 5 } };
+	struct area_light a = { .axis = { { 2, 0, 0 }, { 0, 0, 4 } }, .size = { 3, 5 }, .inv_span = { 0.5, 0.25 } };
 	struct vec3 axes[2];
 	light_area_axes(&a, v3(0, 1, 0), axes);
 	struct vec3 o = light_area_offset(&a, axes, 0, 0);
@@ -83,10 +83,12 @@ static void test_offsets(void)
 	CHECK(o.x == 0 && o.z == -1);
 	/* one point along an axis: no extent there */
 	a.size[1] = 1;
+	a.inv_span[1] = 0;
 	o = light_area_offset(&a, axes, 2, 0);
 	CHECK(o.x == 1 && o.z == 0);
 	/* circular: the corner of the square pulled in onto the circle, 0.001 off centre */
 	a.size[1] = 3;
+	a.inv_span[1] = 0.5;
 	a.circular = true;
 	o = light_area_offset(&a, axes, 0, 0);
 	double c = -0.499 / sqrt(2.0);
