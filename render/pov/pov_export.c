@@ -789,7 +789,10 @@ static void write_header(struct pov *p)
 	if (sp->target_error > 0 && sp->count > 1)
 		fprintf(f, "// target_error %g: NOT pixel-exact: scn stops sampling a pixel early where its error is small,"
 		           " POV-Ray does not.\n", sp->target_error);
-	if (sc->camera.lens_radius > 0)
+	if (sc->camera.lens_radius > 0 && sc->camera.kind == CAMERA_ORTHOGRAPHIC)
+		fputs("// focal blur with an orthographic camera: NOT pixel-exact: POV-Ray 3.7 renders it black (measured).\n",
+		      f);
+	else if (sc->camera.lens_radius > 0)
 		fputs("// focal blur: NOT pixel-exact: POV-Ray places its blur_samples on the lens and in the pixel by its own"
 		      " rule; the images agree in their mean.\n", f);
 	for (size_t i = 0; i < sc->narea_lights; i++)
