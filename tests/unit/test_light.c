@@ -1,7 +1,8 @@
 /* test_light.c: the area light's weights and test points (render/light.c) against POV-Ray's
- * rule, the spotlight factor, and the sample streams (render/stream.c) that jittered
- * lights and the lens draw from: range, stratification over a pixel's samples,
- * independence of cells and dimensions, determinism, and the disc. */
+ * rule, the region their tests share a walk of the tree over, the spotlight factor, and
+ * the sample streams (render/stream.c) that jittered lights and the lens draw from: range,
+ * stratification over a pixel's samples, independence of cells and dimensions,
+ * determinism, and the disc. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -108,6 +109,60 @@ static void test_offsets(void)
 	light_area_axes(&a, v3(0, 0, -1), axes);  /* along z: y takes z's place */
 	CHECK_NEAR(vlen(axes[0]), 2, 1e-15);
 	CHECK_NEAR(vlen(axes[1]), 2, 1e-15);
+}
+
+/* Every point of every test's segment, from the apex to a test point anywhere its jitter
+ * may put it, lies inside the region the tests share their walk over; a point beyond the
+ * light or off to the side does not. Over random lights, apexes and the three layouts. */
+static void test_region(void)
+{
+	uint64_t k = 12345;
+	for (int trial = 0; trial < 2000; trial++) {
+		double r[12];
+		for (int i = 0; i < 12; i++) {
+			k = k * 6364136223846793005u + 1442695040888963407u;
+			r[i] = (double)(k >> 11) * 0x1.0p-53 * 2 - 1;
+		}
+		struct area_light a = { .axis = { v3(r[0] * 3, r[1], r[2]), v3(r[3], r[4] * 3, r[5]) },
+		                        .size = { 2 + trial % 7, 2 + trial % 5 }, .jitter = trial % 2,
+		                        .circular = trial % 3 == 0, .orient = trial % 6 == 0 };
+		for (int i = 0; i < 2; i++)
+			a.inv_span[i] = 1.0 / (a.size[i] - 1);
+		struct vec3 centre = v3(r[6] * 10, 5 + r[7], r[8] * 10), apex = v3(r[9] * 4, r[10], r[11] * 4);
+		struct vec3 axes[2];
+		light_area_axes(&a, vunit(vsub(centre, apex)), axes);
+		struct bvh_region region;
+		if (!light_area_region(&a, axes, centre, apex, 1e-9, &region))
+			continue; /* the light's plane through the apex: no bounded region */
+		for (int s = 0; s < 50; s++) {
+			/* grid corners, and the jitter's farthest reach */
+			double u = (s % 5 == 0) ? -0.5 : (s % 5 == 1) ? a.size[0] - 0.5 : (s * 0.37) - floor(s * 0.37);
+			double v = (s % 7 == 0) ? -0.5 : (s % 7 == 1) ? a.size[1] - 0.5 : (s * 0.61) - floor(s * 0.61);
+			if (!a.jitter) {
+				u = fmin(fmax(u, 0), a.size[0] - 1);
+				v = fmin(fmax(v, 0), a.size[1] - 1);
+			}
+			struct vec3 q = vadd(centre, light_area_offset(&a, axes, u, v));
+			for (int t = 0; t <= 4; t++) {
+				struct vec3 x = vadd(apex, vscale(vsub(q, apex), t / 4.0));
+				for (int pl = 0; pl < region.nplanes; pl++) {
+					const double *pp = region.plane[pl];
+					CHECK(pp[0] * x.x + pp[1] * x.y + pp[2] * x.z <= pp[3] + 1e-9);
+				}
+			}
+		}
+		/* past the light's plane, and far off to the side of the pyramid */
+		struct vec3 beyond = vadd(centre, vscale(vsub(centre, apex), 0.5));
+		struct vec3 side = vadd(apex, vscale(vcross(vsub(centre, apex), vadd(axes[0], axes[1])), 100));
+		bool out_beyond = false, out_side = false;
+		for (int pl = 0; pl < region.nplanes; pl++) {
+			const double *pp = region.plane[pl];
+			out_beyond |= pp[0] * beyond.x + pp[1] * beyond.y + pp[2] * beyond.z > pp[3];
+			out_side |= pp[0] * side.x + pp[1] * side.y + pp[2] * side.z > pp[3];
+		}
+		CHECK(out_beyond);
+		CHECK(out_side);
+	}
 }
 
 static void test_spot(void)
@@ -245,6 +300,7 @@ int main(void)
 {
 	test_weights();
 	test_offsets();
+	test_region();
 	test_spot();
 	test_streams();
 	test_disc();
