@@ -19,3 +19,5 @@ EXAMPLES += examples/orbit.scn
 EXTRA_DIST += examples/tree.png examples/colonnade.png
 EXAMPLES += examples/textures.scn examples/crate-texture.scn
 EXTRA_DIST += examples/textures.png examples/picture.png examples/crate.obj examples/crate.mtl examples/crate.png
+EXAMPLES += examples/still_life.scn
+EXTRA_DIST += examples/still_life.png

@@ -21,7 +21,8 @@ for scene in "$SCN_SRCDIR"/examples/*.scn; do
 	expect_grep "$name.pov" '^#version 3\.7;$'
 	expect_grep "$name.pov" '^global_settings \{ assumed_gamma 1\.0 max_trace_level [0-9]+ adc_bailout 0 ambient_light rgb 0 \}$'
 	expect_grep "$name.pov" "^// Render: povray -D (-A|\+A0\.0 \+AM2 \+R[0-9] -J) \+W[0-9]+ \+H[0-9]+ \+FN16 File_Gamma=1\.0 \+I$name\.pov \+O$name-pov\.png\$"
-	expect_grep "$name.pov" '^camera \{ perspective location <.*> look_at <.*> sky <.*> right x\*[0-9]+/[0-9]+ up y angle [0-9.]+ \}$'
+	# (a lens: the aperture, the focal point and every sample on it; doc/povray.md, Camera)
+	expect_grep "$name.pov" '^camera \{ perspective location <.*> look_at <.*> sky <.*> right x\*[0-9]+/[0-9]+ up y angle [0-9.]+( aperture [0-9.]+ focal_point <.*> blur_samples [0-9]+ variance 0)? \}$'
 	expect_grep "$name.pov" '^background \{ rgb <'
 	# the header names the document that explains the translation, and every document it
 	# names ships with scn: a file of the source tree, or where make install puts one
