@@ -537,9 +537,11 @@ static int first_pov(const struct run *r)
 	return i;
 }
 
-/* The equal-error comparison: the error X is the lowest that at least one POV-Ray series
- * and at least one scn series both reach; scn's time there is its fastest series' (fixed
- * cost included), POV-Ray's its fastest series' there (its best adaptive level). */
+/* The equal-error comparison: the error X is the lowest that every POV-Ray series with a
+ * point and at least one scn series reach (the lowest of one POV-Ray series alone would
+ * leave the others, a hair above it by noise, out of the comparison); scn's time there is
+ * its fastest series' (fixed cost included), POV-Ray's its fastest series' there (its best
+ * adaptive level). With one POV-Ray series: the lowest error both reach. */
 static void print_comparison(const struct run *r, double fixed, const char *why_no_pov)
 {
 	int pov = first_pov(r), npov = r->nseries - pov;
@@ -550,13 +552,14 @@ static void print_comparison(const struct run *r, double fixed, const char *why_
 	struct curve *c = xmalloc((size_t)r->nseries * sizeof *c);
 	for (int i = 0; i < r->nseries; i++)
 		c[i] = frontier(r, i, i >= pov ? 0 : fixed);
-	double lo_scn = INFINITY, lo_pov = INFINITY, hi_pov = 0;
+	double lo_scn = INFINITY, lo_pov = INFINITY, hi_pov = 0, x_pov = 0;
 	for (int i = 0; i < r->nseries; i++)
 		if (c[i].n && i < pov)
 			lo_scn = fmin(lo_scn, c[i].e[c[i].n - 1]);
 		else if (c[i].n)
-			lo_pov = fmin(lo_pov, c[i].e[c[i].n - 1]), hi_pov = fmax(hi_pov, c[i].e[0]);
-	double x = isfinite(lo_pov) ? fmax(lo_scn, lo_pov) : NAN, tp = INFINITY;
+			lo_pov = fmin(lo_pov, c[i].e[c[i].n - 1]), hi_pov = fmax(hi_pov, c[i].e[0]),
+			x_pov = fmax(x_pov, c[i].e[c[i].n - 1]);
+	double x = isfinite(lo_pov) ? fmax(lo_scn, x_pov) : NAN, tp = INFINITY;
 	int best = -1, best_pov = -1;
 	double tbest = INFINITY;
 	for (int i = pov; i < r->nseries; i++) {
