@@ -50,7 +50,9 @@ def timed(cmd, cwd=None):
 
 STATS_TIME = re.compile(r"^time: parse ([0-9.]+)s  check ([0-9.]+)s  evaluate ([0-9.]+)s  load meshes ([0-9.]+)s"
                         r"  load images ([0-9.]+)s  build \w+ ([0-9.]+)s  render ([0-9.]+)s  write ([0-9.]+)s$", re.M)
-STATS_RAYS = re.compile(r"^rays: +camera (\d+) +shadow (\d+) +reflection (\d+) +refraction (\d+) +total (\d+)$", re.M)
+# "area shadow N" only for a scene with area lights
+STATS_RAYS = re.compile(r"^rays: +camera (\d+) +shadow (\d+) +(?:area shadow (\d+) +)?reflection (\d+) +refraction (\d+)"
+                        r" +total (\d+)$", re.M)
 
 
 def scn_stats(text):
@@ -59,7 +61,8 @@ def scn_stats(text):
     if not t or not r:
         sys.exit("bench: no --stats in scn's output:\n" + text[-2000:])
     t = [float(x) for x in t.groups()]
-    rays = dict(zip(["camera", "shadow", "reflection", "refraction", "total"], (int(x) for x in r.groups())))
+    rays = dict(zip(["camera", "shadow", "area shadow", "reflection", "refraction", "total"],
+                    (int(x or 0) for x in r.groups())))
     return {"load": t[0] + t[1] + t[2] + t[3] + t[4], "build": t[5], "render": t[6], "write": t[7], "rays": rays}
 
 
@@ -71,13 +74,23 @@ def scn_render(scene, out, accel="bvh"):
 
 def pov_command(pov, spp):
     """The povray command line at the top of a .pov that scn pov wrote, with +WT2, its
-    anti-aliasing set to trace as many camera rays a pixel as scn's spp do."""
+    anti-aliasing set to trace as many camera rays a pixel as scn's spp do: with focal blur,
+    the header's -A as it is, as the camera's blur_samples (scn's spp) are the rays a pixel."""
     with open(pov) as f:
         for line in f:
             if line.startswith("// Render: "):
                 cmd = shlex.split(line[len("// Render: "):]) + ["+WT%d" % THREADS]
-                return equal_rays_aa(cmd, int(spp))
+                return cmd if pov_blur_samples(pov) else equal_rays_aa(cmd, int(spp))
     sys.exit("bench: %s has no '// Render:' line" % pov)
+
+
+def pov_blur_samples(pov):
+    """The camera's blur_samples in a .pov that scn pov wrote, or 0 (no focal blur). POV-Ray
+    traces exactly that many camera rays a pixel (its variance 0 never stops it early; its
+    statistics count them in neither Pixels nor Samples) and with -A no more."""
+    with open(pov) as f:
+        m = re.search(r"^camera \{.* blur_samples (\d+)", f.read(), re.M)
+    return int(m.group(1)) if m else 0
 
 
 def equal_rays_aa(cmd, spp):
@@ -96,10 +109,13 @@ def equal_rays_aa(cmd, spp):
 POV_STATS = re.compile(r"^Pixels: +(\d+) +Samples: +(\d+)", re.M)
 
 
-def pov_camera_rays(text):
-    """POV-Ray's camera rays from its statistics: its pixels and its anti-aliasing samples."""
+def pov_camera_rays(text, blur_samples=0):
+    """POV-Ray's camera rays from its statistics: its pixels and its anti-aliasing samples, or
+    with focal blur (and -A) blur_samples for each pixel."""
     m = POV_STATS.search(text)
-    return int(m.group(1)) + int(m.group(2)) if m else float("nan")
+    if not m:
+        return float("nan")
+    return int(m.group(1)) * blur_samples if blur_samples else int(m.group(1)) + int(m.group(2))
 
 
 def median_run(runs):
@@ -128,6 +144,11 @@ def make_scenes(work):
     scenes.csg_wall(os.path.join(work, "csg-wall.scn"))
     scenes.macro_tree(os.path.join(work, "macro-tree.scn"), 13)
     surfaces_scenes(work)
+    scenes.soft_shadows(os.path.join(work, "soft-shadows.scn"))
+    scenes.spotlights(os.path.join(work, "spotlights.scn"))
+    scenes.fog(os.path.join(work, "fog.scn"))
+    scenes.orthographic(os.path.join(work, "orthographic.scn"))
+    scenes.focal_blur(os.path.join(work, "focal-blur.scn"))
     return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
             ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
             ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
@@ -138,7 +159,14 @@ def make_scenes(work):
             ("macro tree", "a macro calling itself twice, turned by rand(): 16383 cylinders, 24575 spheres, "
              "1 light", "macro-tree.scn"),
             ("textured", "the headline's spheres in the ten patterns (some turbulent, some bumped) and an image "
-             "map, a marble floor", "textured.scn")]
+             "map, a marble floor", "textured.scn"),
+            ("soft shadows", "150 spheres and 150 boxes on a floor under one area light 8 x 8, jittered",
+             "soft-shadows.scn"),
+            ("spotlights", "the headline's spheres under four spotlights with fade", "spotlights.scn"),
+            ("fog", "the headline with fog (distance 18)", "fog.scn"),
+            ("orthographic", "the headline's spheres from above through an orthographic camera", "orthographic.scn"),
+            ("focal blur", "the headline through a lens (aperture 0.6; POV-Ray: blur_samples 5 and -A, 5 rays "
+             "a pixel as scn's 5 samples)", "focal-blur.scn")]
 
 
 def scene_settings(path):
@@ -169,12 +197,13 @@ def scene_table(work, runs, table_scenes, only=None):
         subprocess.run([SCN, "pov", scene, "-o", pov], check=True, stderr=subprocess.DEVNULL)
         settings = scene_settings(scene)
         cmd = pov_command(pov, settings[1])
+        blur = pov_blur_samples(pov)
         s_runs, p_runs = [], []
         for i in range(runs):
             log("bench: %s: run %d of %d: scn, then POV-Ray" % (name, i + 1, runs))
             s_runs.append(scn_render(scene, os.path.join(work, file[:-4] + "-scn.png")))
             wall, mb, err = timed(cmd, cwd=work)
-            p_runs.append({"wall": wall, "mb": mb, "camera": pov_camera_rays(err)})
+            p_runs.append({"wall": wall, "mb": mb, "camera": pov_camera_rays(err, blur)})
         s_med = median_run(s_runs)
         s_med["rmse"] = image_rmse(os.path.join(work, file[:-4] + "-scn.png"), os.path.join(work, file[:-4] + "-pov.png"))
         rows.append((name, what, settings, s_med, median_run(p_runs),
@@ -210,14 +239,15 @@ def print_scene_table(rows, runs):
           "(sampling noise; the same picture).")
     print()
     print("scn's rays per second by kind during its render phase (Mrays/s; the median run's --stats):")
-    head = "%-12s %9s %9s %11s %11s %9s" % ("scene", "camera", "shadow", "reflection", "refraction", "total")
+    head = "%-12s %9s %9s %12s %11s %11s %9s" % ("scene", "camera", "shadow", "area shadow", "reflection",
+                                                 "refraction", "total")
     print(head)
     print("-" * len(head))
     for name, _, _, s, _, _, _, _ in rows:
         r = s["rays"]
         rate = lambda k: "%.2f" % (r[k] / s["render"] * 1e-6) if r[k] else "-"
-        print("%-12s %9s %9s %11s %11s %9s" % (name, rate("camera"), rate("shadow"), rate("reflection"),
-                                               rate("refraction"), rate("total")))
+        print("%-12s %9s %9s %12s %11s %11s %9s" % (name, rate("camera"), rate("shadow"), rate("area shadow"),
+                                                    rate("reflection"), rate("refraction"), rate("total")))
     print()
     print("scenes:")
     for name, what, _, _, _, _, _, cmd in rows:
@@ -614,12 +644,28 @@ def embree(work):
           % (rate[1000][0] / rate[1000000][0], rate[1000][1] / rate[1000000][1]))
 
 
-def converge():
-    log("bench: scn converge examples/whitted.scn --budget 300 (about 5 minutes)")
-    p = subprocess.run([SCN, "converge", os.path.join(TOP, "examples", "whitted.scn"), "--budget", "300"],
-                       capture_output=True, text=True, check=True)
-    last = p.stdout.strip().splitlines()[-1]
-    print("scn converge examples/whitted.scn --budget 300, its last line: " + last)
+CONVERGE_BUDGET = 300  # seconds, for each scene
+
+
+def converge(work, only=None):
+    """scn converge on examples/whitted.scn, and on a few spheres and boxes under a jittered 8 x 8
+    area light (POV-Ray then at each area_light adaptive level too), the plot of the latter into
+    examples/soft-converge.svg. only: the names of the scenes to run ("whitted", "soft shadows")."""
+    soft = os.path.join(work, "soft-converge.scn")
+    scenes.soft_shadows(soft, n=3, width=320, height=240, samples=0)
+    for name, scene, extra in (("whitted", os.path.join(TOP, "examples", "whitted.scn"), []),
+                               ("soft shadows", soft, ["--plot", os.path.join(TOP, "examples", "soft-converge.svg")])):
+        if only and name not in only:
+            continue
+        log("bench: scn converge %s --budget %d (about %d minutes)" % (name, CONVERGE_BUDGET, CONVERGE_BUDGET // 60))
+        p = subprocess.run([SCN, "converge", scene, "--budget", str(CONVERGE_BUDGET), "-j", str(THREADS)] + extra,
+                           capture_output=True, text=True, check=True)
+        shown = os.path.relpath(scene, TOP) if scene.startswith(TOP) else "bench's " + os.path.basename(scene)
+        if extra:
+            print("scn converge %s --budget %d:" % (shown, CONVERGE_BUDGET))
+            print(p.stdout, end="")
+        print("scn converge %s --budget %d, its last line: %s" % (shown, CONVERGE_BUDGET,
+                                                                  p.stdout.strip().splitlines()[-1]))
 
 
 def main():
@@ -633,7 +679,8 @@ def main():
                          "embree, and converge with --full")
     ap.add_argument("--scene", action="append", metavar="NAME",
                     help="the table's scenes to run, by the name in its first column (repeatable: "
-                         "--scene 'quadrics 1e4' --scene 'csg wall'); default every one")
+                         "--scene 'quadrics 1e4' --scene 'csg wall'), and converge's ('whitted', 'soft shadows'); "
+                         "default every one")
     ap.add_argument("--work", default=os.environ.get("SCN_BENCH_DIR", "/tmp/scn-bench"),
                     help="where scenes, meshes and images go (default /tmp/scn-bench)")
     ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
@@ -664,7 +711,7 @@ def main():
         print()
         sys.stdout.flush()
     if "converge" in parts:
-        converge()
+        converge(a.work, a.scene)
         print()
         sys.stdout.flush()
     if "embree" in parts:

@@ -14,7 +14,7 @@ samples {{ count 5  pattern jittered }}
 max_depth 8
 """
 
-HEADLINE = """// headline: 1000 spheres over a checkered floor, a tenth mirror and a tenth glass
+HEADLINE = """// {what}
 {setup}material floor  {{ diffuse checker(<0.9, 0.9, 0.9>, <0.25, 0.25, 0.3>, 1)  reflect 0.1 }}
 material mirror {{ diffuse 0.05  specular 0.8  shininess 200  reflect 0.85 }}
 material glass  {{ diffuse 0  specular 0.6  shininess 300  reflect 0.08  transmit 0.9  ior 1.5 }}
@@ -53,11 +53,85 @@ def sphere_loops(n, materials, centre, radius, seed=0):
     return "".join(out)
 
 
-def headline(path):
-    centre = "<20 * rand(3 * {k}) - 10, 0.3 + 3.5 * rand(3 * {k} + 1), 20 * rand(3 * {k} + 2) - 8>"
-    radius = "0.25 + 0.35 * rand(7 * {k} + 5)"
+# the headline's spheres: where, and how big
+HEADLINE_CENTRE = "<20 * rand(3 * {k}) - 10, 0.3 + 3.5 * rand(3 * {k} + 1), 20 * rand(3 * {k} + 2) - 8>"
+HEADLINE_RADIUS = "0.25 + 0.35 * rand(7 * {k} + 5)"
+
+
+def headline(path, what="headline: 1000 spheres over a checkered floor, a tenth mirror and a tenth glass",
+             setup=HEADLINE_SETUP.format()):
     mats = ["mirror"] + ["glass"] + ["red", "green", "blue", "sand"] * 2
-    write(path, HEADLINE.format(setup=HEADLINE_SETUP.format(), loops=sphere_loops(1000, mats, centre, radius)))
+    write(path, HEADLINE.format(what=what, setup=setup,
+                                loops=sphere_loops(1000, mats, HEADLINE_CENTRE, HEADLINE_RADIUS)))
+
+
+# The scenes of LANGUAGE.md section 12's lights and cameras for the table: the headline's
+# spheres and floor at 640x480 under another camera, lights or fog ({camera} and {lights}
+# are whole statements).
+SECTION12_SETUP = """{camera}
+{lights}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+samples {{ count 5  pattern jittered }}
+max_depth 8
+{extra}"""
+HEADLINE_CAMERA = "location <0, 7, -16>  look_at <0, 0.5, 0>  fov 60  resolution 640, 480"
+HEADLINE_LIGHTS = "light  { position <-10, 14, -8> }\nlight  { position <12, 10, -4>  intensity 0.6 }"
+
+
+def headline_variant(path, what, camera=HEADLINE_CAMERA, lights=HEADLINE_LIGHTS, extra=""):
+    """The headline at 640x480 with camera (the camera block's contents), lights or extra
+    statements of its own."""
+    headline(path, what, SECTION12_SETUP.format(camera="camera { %s }" % camera, lights=lights, extra=extra))
+
+
+def spotlights(path):
+    """The headline's spheres under four spotlights with fade, no other light."""
+    lights = "\n".join(
+        "light  { position <%g, 12, %g>  spotlight { point_at <%g, 0, %g>  radius 14  falloff 24  tightness 4 }"
+        "  fade_distance 14  fade_power 2 }" % (x, z, x / 2, z / 2 + 2) for x, z in ((-9, -8), (9, -8), (-7, 8), (7, 8)))
+    headline_variant(path, "spotlights: the headline's spheres under four spotlights with fade", lights=lights)
+
+
+def fog(path):
+    headline_variant(path, "fog: the headline with fog", extra="fog { distance 18  color <0.7, 0.75, 0.8> }\n")
+
+
+def orthographic(path):
+    headline_variant(path, "orthographic: the headline's spheres seen from above, orthographic",
+                     camera="orthographic  width 26  location <0, 20, -12>  look_at <0, 0, 1>  resolution 640, 480")
+
+
+def focal_blur(path):
+    headline_variant(path, "focal blur: the headline through a lens, sharp at the middle",
+                     camera=HEADLINE_CAMERA + "  aperture 0.6  focal_point <0, 0.5, 1>")
+
+
+# Spheres and boxes on a floor under one jittered 8 x 8 area light ({n} of each; the table's
+# at 640x480, 5 samples a pixel; scn converge's few at 320x240, its own samples).
+SOFT = """// soft shadows: {n} spheres and {n} boxes on a floor under one area light, 8 x 8, jittered
+camera {{ location <0, 6, -{cz}>  look_at <0, 0.5, 0>  fov 55  resolution {w}, {h} }}
+light  {{ position <-5, 10, -6>  area {{ <3, 0, 0>, <0, 0, 3>, 8, 8  jitter }} }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+{samples}material floor {{ diffuse <0.8, 0.78, 0.72> }}
+material red   {{ diffuse <0.8, 0.2, 0.15>  specular 0.3  shininess 40 }}
+material green {{ diffuse <0.2, 0.7, 0.25>  specular 0.3  shininess 40 }}
+material blue  {{ diffuse <0.2, 0.3, 0.8>  specular 0.3  shininess 40 }}
+plane {{ <0, 1, 0>, 0  material floor }}
+{loops}for i in 0 .. {n} {{ box {{ <{s} * rand(5 * i + 9000) - {h2}, 0, {s} * rand(5 * i + 9001) - {h2}>,
+  <{s} * rand(5 * i + 9000) - {h2} + {b}, {b} * (0.5 + 1.5 * rand(5 * i + 9002)), {s} * rand(5 * i + 9001) - {h2} + {b}>
+  material blue }} }}
+"""
+
+
+def soft_shadows(path, n=150, width=640, height=480, samples=5):
+    """n spheres and n boxes in a square (side 16 for the table's hundreds, 6 for a few) on a
+    floor, lit by one jittered 8 x 8 area light; samples 0: no samples statement."""
+    side = 16 if n > 20 else 6
+    r = 0.35 if n > 20 else 0.7
+    centre = ("<%g * rand(3 * {k}) - %g, %g, %g * rand(3 * {k} + 2) - %g>" % (side, side / 2, r, side, side / 2))
+    write(path, SOFT.format(n=n, cz=14 if n > 20 else 8, w=width, h=height, s=side, h2=side / 2, b=2 * r,
+                            samples="samples { count %d  pattern jittered }\n" % samples if samples else "",
+                            loops=sphere_loops(n, ["red", "green"], centre, repr(r))))
 
 
 def field(path, n, width=640, height=480):
@@ -272,8 +346,6 @@ def surfaces(path, image, plain):
     """The headline's 1000 spheres and floor, every material a pattern (the floor marble), a
     few with bumps, one in thirteen an image map (image, an absolute path); or, plain, the
     exact twin: the same spheres and materials with plain colours and no normals."""
-    centre = "<20 * rand(3 * {k}) - 10, 0.3 + 3.5 * rand(3 * {k} + 1), 20 * rand(3 * {k} + 2) - 8>"
-    radius = "0.25 + 0.35 * rand(7 * {k} + 5)"
     mats = []
     for name, diffuse, colour, rest in SURFACES:
         if plain:
@@ -288,7 +360,8 @@ def surfaces(path, image, plain):
             "turbulence, some with bumps) or an image map")
     write(path, SURFACES_SCENE.format(what=what, setup=HEADLINE_SETUP.format(), floor=floor,
                                       materials="\n".join(mats),
-                                      loops=sphere_loops(1000, [m[0] for m in SURFACES], centre, radius)))
+                                      loops=sphere_loops(1000, [m[0] for m in SURFACES], HEADLINE_CENTRE,
+                                                         HEADLINE_RADIUS)))
 
 
 SHARED_IMAGE = """// {n} sphere(s), each with a material of its own that maps the same image file

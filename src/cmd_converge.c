@@ -41,7 +41,8 @@ struct converge_args {
 enum series_kind { SERIES_FIXED, SERIES_ADAPTIVE, SERIES_POV };
 
 /* The series in the order of the table: random, jittered, poisson, grid, adaptive,
- * POV-Ray (always last). */
+ * then POV-Ray's (always last): "POV-Ray", and when the scene has area lights one more
+ * per area_light adaptive level that subdivides less than POV-Ray's default. */
 enum { GRID_SERIES = 3 };
 
 /* The points rendered before the default reference, to time a sample: the grid's
@@ -51,7 +52,7 @@ enum { CALIBRATION = 2 };
 /* A row of points of one kind: counts 1, 4, 16, ... (fixed), targets 0.02, 0.01, ...
  * (adaptive), or -A then +AM2 +R1, +R2, ... (POV-Ray). */
 struct series {
-	const char *name;
+	char name[32];
 	enum series_kind kind;
 	enum sample_kind pattern;
 	const char *color;
@@ -61,6 +62,7 @@ struct series {
 	double last_seconds;           /* the previous point's time, 0 before it */
 	double last_cost;              /* its nominal rays per pixel */
 	double pov_fixed;              /* POV-Ray: its last run's time outside Trace Time */
+	int pov_adaptive;              /* POV-Ray: its area_adaptive (pov_export.h; 0: none) */
 };
 
 struct point {
@@ -80,8 +82,11 @@ struct run {
 	int max_count;                 /* the largest sample count of a fixed series */
 	double t_start;
 	double per_sample;             /* seconds per sample per pixel of scn, last measured; 0: unknown */
-	struct series series[6];
+	struct series *series;
 	int nseries;
+	size_t cap_series;
+	int pov_levels;                /* POV-Ray's adaptive levels below full subdivision: 0 to
+	                                  pov_levels - 1 each get a series (0: no area light) */
 	struct point *points;
 	size_t npoints, cap_points;
 	struct povray pov;             /* POV-Ray and its folder, when has_pov */
@@ -335,14 +340,44 @@ static int run_scn_step(struct run *r, int si)
 
 /* --- POV-Ray --- */
 
+/* The twin's file name for an area_adaptive value (pov_export.h): one file per level. */
+static void twin_name(int area_adaptive, char *buf, size_t n)
+{
+	if (area_adaptive > 0)
+		snprintf(buf, n, "twin-adaptive%d.pov", area_adaptive - 1);
+	else
+		snprintf(buf, n, "twin.pov");
+}
+
+/* The adaptive levels at which POV-Ray's area_light subdivision can stop short of the
+ * full grid: its trace.cpp (TraceAreaLightSubsetShadowRay) tests the four corners of a
+ * cell of the N1 x N2 grid and splits it in four (a side of w points apart into two of
+ * floor(w/2)) while level < adaptive or two neighbouring corners differ by more than 0.1,
+ * down to sides of 1; a grid whose longer side is w apart is split fully at a level
+ * equal to the number of halvings that take w to 1, or more, which is then the number
+ * of levels that differ from no adaptive keyword (Adaptive_Level 100). */
+static int area_levels(const struct scene *sc)
+{
+	int levels = 0;
+	for (size_t i = 0; i < sc->narea_lights; i++)
+		for (int k = 0; k < 2; k++) {
+			int n = 0;
+			for (int w = sc->area_lights[i].size[k] - 1; w > 1; w /= 2)
+				n++;
+			levels = n > levels ? n : levels;
+		}
+	return levels;
+}
+
 static void run_pov_step(struct run *r, int si)
 {
 	struct series *s = &r->series[si];
 	int step = s->next;
-	char aa[48], err[1024];
+	char aa[48], err[1024], twin[32];
 	pov_setting(step, aa, sizeof aa);
+	twin_name(s->pov_adaptive, twin, sizeof twin);
 	struct povray_render pr;
-	if (povray_render(&r->pov, "twin.pov", aa, r->sc.camera.width, r->sc.camera.height, r->threads, &pr, err,
+	if (povray_render(&r->pov, twin, aa, r->sc.camera.width, r->sc.camera.height, r->threads, &pr, err,
 	                  sizeof err) != 0) {
 		fprintf(stderr, "scn converge: warning: %s; no more POV-Ray points\n", err);
 		s->stopped = true;
@@ -368,8 +403,9 @@ static void run_pov_step(struct run *r, int si)
 	note(r, "%s %s: %.3f s (its Trace Time %.3f s), RMSE %.4g", s->name, aa, pr.seconds, pr.trace, p->rmse);
 }
 
-/* Finds povray and writes the scene's twin to its folder; false with a warning when
- * either fails, and there is then no POV-Ray series. */
+/* Finds povray and writes the scene's twin to its folder, one for each adaptive level
+ * (area_levels); false with a warning when either fails, and there is then no POV-Ray
+ * series. */
 static bool open_pov(struct run *r, const struct scene_desc *desc, const char **why)
 {
 	char err[1024];
@@ -393,9 +429,17 @@ static bool open_pov(struct run *r, const struct scene_desc *desc, const char **
 	};
 	/* the header's command line then says -A; scn converge gives its own */
 	r->sc.sampling = (struct sampling){ .count = 1, .kind = SAMPLE_CENTER, .seed = r->sc.sampling.seed };
-	char *path = povray_file(&r->pov, "twin.pov");
-	bool ok = pov_export_file(&r->sc, &po, path, err, sizeof err) == 0;
-	free(path);
+	r->pov_levels = area_levels(&r->sc);
+	bool ok = true;
+	for (int k = 0; ok && k <= r->pov_levels; k++) {
+		char twin[32];
+		po.area_adaptive = k;  /* 0: the full subdivision, then adaptive 0, 1, ... */
+		twin_name(k, twin, sizeof twin);
+		po.pov_name = twin;
+		char *path = povray_file(&r->pov, twin);
+		ok = pov_export_file(&r->sc, &po, path, err, sizeof err) == 0;
+		free(path);
+	}
 	if (!ok) {
 		fprintf(stderr, "scn converge: no POV-Ray series: %s\n", err);
 		*why = "its scene could not be written";
@@ -484,26 +528,46 @@ static bool time_at(const struct curve *c, double x, double *t)
 	return true;
 }
 
-/* The equal-error comparison: the error X is the lowest that POV-Ray and at least one
- * scn series both reach; scn's time there is its fastest series' (fixed cost included). */
+/* The first POV-Ray series (they are last). */
+static int first_pov(const struct run *r)
+{
+	int i = r->nseries;
+	while (i > 0 && r->series[i - 1].kind == SERIES_POV)
+		i--;
+	return i;
+}
+
+/* The equal-error comparison: the error X is the lowest that every POV-Ray series with a
+ * point and at least one scn series reach (the lowest of one POV-Ray series alone would
+ * leave the others, a hair above it by noise, out of the comparison); scn's time there is
+ * its fastest series' (fixed cost included), POV-Ray's its fastest series' there (its best
+ * adaptive level). With one POV-Ray series: the lowest error both reach. */
 static void print_comparison(const struct run *r, double fixed, const char *why_no_pov)
 {
-	int pov = r->nseries - 1;
+	int pov = first_pov(r), npov = r->nseries - pov;
 	if (why_no_pov) {
 		printf("at equal error: no POV-Ray series to compare with (%s)\n", why_no_pov);
 		return;
 	}
-	struct curve c[6];
+	struct curve *c = xmalloc((size_t)r->nseries * sizeof *c);
 	for (int i = 0; i < r->nseries; i++)
-		c[i] = frontier(r, i, i == pov ? 0 : fixed);
-	double lo_scn = INFINITY;
-	for (int i = 0; i < pov; i++)
-		if (c[i].n)
+		c[i] = frontier(r, i, i >= pov ? 0 : fixed);
+	double lo_scn = INFINITY, lo_pov = INFINITY, hi_pov = 0, x_pov = 0;
+	for (int i = 0; i < r->nseries; i++)
+		if (c[i].n && i < pov)
 			lo_scn = fmin(lo_scn, c[i].e[c[i].n - 1]);
-	double x = c[pov].n ? fmax(lo_scn, c[pov].e[c[pov].n - 1]) : NAN, tp = 0;
-	int best = -1;
+		else if (c[i].n)
+			lo_pov = fmin(lo_pov, c[i].e[c[i].n - 1]), hi_pov = fmax(hi_pov, c[i].e[0]),
+			x_pov = fmax(x_pov, c[i].e[c[i].n - 1]);
+	double x = isfinite(lo_pov) ? fmax(lo_scn, x_pov) : NAN, tp = INFINITY;
+	int best = -1, best_pov = -1;
 	double tbest = INFINITY;
-	if (isfinite(x) && time_at(&c[pov], x, &tp)) {
+	for (int i = pov; i < r->nseries; i++) {
+		double t;
+		if (isfinite(x) && time_at(&c[i], x, &t) && t < tp)
+			tp = t, best_pov = i;
+	}
+	if (best_pov >= 0) {
 		printf("time to RMSE %.4g (scn: render plus its fixed cost; POV-Ray: the whole process):", x);
 		for (int i = 0; i < pov; i++) {
 			/* a series whose fastest point is already below x reached x by then (small
@@ -518,21 +582,32 @@ static void print_comparison(const struct run *r, double fixed, const char *why_
 				printf(" %s -,", r->series[i].name + 4);
 			}
 		}
-		printf(" POV-Ray %.3g s\n", tp);
+		for (int i = pov; i < r->nseries; i++) {
+			double t;
+			if (time_at(&c[i], x, &t))
+				printf(" %s %.3g s%s", r->series[i].name, t, i + 1 < r->nseries ? "," : "\n");
+			else
+				printf(" %s -%s", r->series[i].name, i + 1 < r->nseries ? "," : "\n");
+		}
 	}
-	if (c[pov].n == 0) {
+	if (!isfinite(lo_pov)) {
 		printf("at equal error: no POV-Ray point to compare with (see the warnings)\n");
 	} else if (best < 0) {
 		printf("at equal error: no RMSE that both scn and POV-Ray reach");
-		if (isfinite(lo_scn) && c[pov].n)
-			printf(" (scn down to %.4g, POV-Ray %.4g to %.4g)", lo_scn, c[pov].e[c[pov].n - 1], c[pov].e[0]);
+		if (isfinite(lo_scn))
+			printf(" (scn down to %.4g, POV-Ray %.4g to %.4g)", lo_scn, lo_pov, hi_pov);
 		printf("\n");
-	} else {
+	} else if (npov == 1) {
 		printf("at equal error (RMSE %.4g), scn takes %.3g s and POV-Ray %.3g s: scn/POV-Ray = %.3g (scn %s)\n", x,
 		       tbest, tp, tbest / tp, r->series[best].name + 4);
+	} else {
+		printf("at equal error (RMSE %.4g), scn takes %.3g s and POV-Ray %.3g s: scn/POV-Ray = %.3g (scn %s;"
+		       " POV-Ray's fastest there: %s)\n",
+		       x, tbest, tp, tbest / tp, r->series[best].name + 4, r->series[best_pov].name);
 	}
 	for (int i = 0; i < r->nseries; i++)
 		free(c[i].t), free(c[i].e);
+	free(c);
 }
 
 static const char *spp_text(double spp, char *buf, size_t n)
@@ -546,7 +621,10 @@ static const char *spp_text(double spp, char *buf, size_t n)
 
 static void print_table(const struct run *r)
 {
-	printf("%-14s %-22s %6s %9s %10s %10s\n", "series", "setting", "spp", "seconds", "RMSE", "est. RMSE");
+	int w = 14;                    /* the series' column: wider for "POV-Ray adaptive K" */
+	for (int s = 0; s < r->nseries; s++)
+		w = (int)strlen(r->series[s].name) > w ? (int)strlen(r->series[s].name) : w;
+	printf("%-*s %-22s %6s %9s %10s %10s\n", w, "series", "setting", "spp", "seconds", "RMSE", "est. RMSE");
 	for (int s = 0; s < r->nseries; s++)
 		for (size_t i = 0; i < r->npoints; i++) {
 			const struct point *p = &r->points[i];
@@ -555,7 +633,7 @@ static void print_table(const struct run *r)
 			char spp[32], est[32] = "-";
 			if (p->est >= 0)
 				snprintf(est, sizeof est, "%.4g", p->est);
-			printf("%-14s %-22s %6s %9.3f %10.4g %10s\n", r->series[s].name, p->setting,
+			printf("%-*s %-22s %6s %9.3f %10.4g %10s\n", w, r->series[s].name, p->setting,
 			       spp_text(p->spp, spp, sizeof spp), p->seconds, p->rmse, est);
 		}
 }
@@ -599,7 +677,7 @@ static bool write_csv(const struct run *r, const char *path)
 
 static bool write_plot(const struct run *r, const char *path, const char *title, const char *subtitle)
 {
-	struct plot_series ps[6];
+	struct plot_series *ps = xmalloc((size_t)r->nseries * sizeof *ps);
 	double *xs = xmalloc((r->npoints + 1) * sizeof *xs), *ys = xmalloc((r->npoints + 1) * sizeof *ys);
 	size_t used = 0;
 	int n = 0;
@@ -627,6 +705,7 @@ static bool write_plot(const struct run *r, const char *path, const char *title,
 		fclose(f);
 	ok = ok && write_file(path, text, len);
 	free(text);
+	free(ps);
 	free(xs);
 	free(ys);
 	return ok;
@@ -642,20 +721,33 @@ static void plan_series(struct run *r, bool pov)
 		{ "scn poisson", SAMPLE_POISSON, "#2ca02c" },
 		{ "scn grid", SAMPLE_GRID, "#9467bd" },
 	};
+	/* POV-Ray's adaptive levels, each its own colour */
+	static const char *const pov_colors[] = { "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f" };
 	int steps = 0;
 	while (fixed_count(steps) <= r->max_count)
 		steps++;
 	r->nseries = 0;
+	int levels = pov ? r->pov_levels : 0;
+	xgrow((void **)&r->series, &r->cap_series, (size_t)(6 + levels), sizeof *r->series);
 	for (size_t i = 0; i < sizeof fixed / sizeof *fixed; i++)
-		r->series[r->nseries++] = (struct series){ .name = fixed[i].name, .kind = SERIES_FIXED,
-		                                           .pattern = fixed[i].k, .color = fixed[i].color, .nsteps = steps };
-	r->series[r->nseries++] = (struct series){ .name = "scn adaptive", .kind = SERIES_ADAPTIVE,
-	                                           .pattern = SAMPLE_JITTERED, .color = "#ff7f0e",
-	                                           .nsteps = ADAPTIVE_STEPS };
-	/* -A, then +R1 up to the depth whose 4^(d-1) rays per pixel match the largest count */
-	r->series[r->nseries++] = (struct series){ .name = "POV-Ray", .kind = SERIES_POV, .color = "#d62728",
-	                                           .dashed = true, .squares = true,
-	                                           .nsteps = pov ? steps + 1 : 0 };
+		r->series[r->nseries++] = (struct series){ .kind = SERIES_FIXED, .pattern = fixed[i].k,
+		                                           .color = fixed[i].color, .nsteps = steps };
+	r->series[r->nseries++] = (struct series){ .kind = SERIES_ADAPTIVE, .pattern = SAMPLE_JITTERED,
+	                                           .color = "#ff7f0e", .nsteps = ADAPTIVE_STEPS };
+	for (size_t i = 0; i < sizeof fixed / sizeof *fixed; i++)
+		snprintf(r->series[i].name, sizeof r->series[i].name, "%s", fixed[i].name);
+	snprintf(r->series[r->nseries - 1].name, sizeof r->series[0].name, "scn adaptive");
+	/* -A, then +R1 up to the depth whose 4^(d-1) rays per pixel match the largest count:
+	 * with no adaptive keyword, then at each adaptive level */
+	for (int k = 0; k <= levels; k++) {
+		struct series *s = &r->series[r->nseries++];
+		*s = (struct series){ .kind = SERIES_POV, .color = k ? pov_colors[(k - 1) % 5] : "#d62728",
+		                      .dashed = true, .squares = true, .nsteps = pov ? steps + 1 : 0, .pov_adaptive = k };
+		if (k)
+			snprintf(s->name, sizeof s->name, "POV-Ray adaptive %d", k - 1);
+		else
+			snprintf(s->name, sizeof s->name, "POV-Ray");
+	}
 }
 
 static void skip_note(struct run *r, const struct series *s, double predicted)
@@ -824,8 +916,9 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 		snprintf(ref_text, sizeof ref_text, "%s", a.reference);
 	}
 	{
-		/* the plan again, with the real largest count, keeping the grid's first point */
-		struct series grid = r.series[GRID_SERIES];
+		/* the plan again, with the real largest count, keeping the grid's first point
+		 * (none with a reference file, where this is the first plan) */
+		struct series grid = r.nseries > GRID_SERIES ? r.series[GRID_SERIES] : (struct series){ 0 };
 		plan_series(&r, r.has_pov);
 		r.series[GRID_SERIES].next = grid.next;
 		r.series[GRID_SERIES].last_seconds = grid.last_seconds;
@@ -847,7 +940,7 @@ int cmd_converge(const struct command *self, int argc, char **argv)
 	printf("\n");
 	if (r.skipped[0])
 		printf("not run, over the budget of %g s: %s\n", a.budget, r.skipped);
-	const struct series *pov = &r.series[r.nseries - 1];
+	const struct series *pov = &r.series[first_pov(&r)];
 	if (pov->last_seconds > 0)
 		printf("POV-Ray's start-up and parse took %.3f s of its last run (its wall time less its Trace Time)\n",
 		       pov->pov_fixed);
@@ -871,6 +964,7 @@ done:
 	if (r.has_pov)
 		povray_close(&r.pov);
 	free(r.points);
+	free(r.series);
 	scene_free(&r.sc);
 	scene_desc_free(&desc);
 	diag_fini(&d);

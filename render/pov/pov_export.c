@@ -682,7 +682,8 @@ static void write_lights(struct pov *p)
 		}
 		if (l->area >= 0) {
 			/* POV-Ray's area_light without adaptive subdivides its grid fully (its
-			 * Adaptive_Level defaults to 100): the weights scn computes */
+			 * Adaptive_Level defaults to 100): the weights scn computes; a lower level,
+			 * when asked for, skips where the corners agree */
 			const struct area_light *a = &sc->area_lights[l->area];
 			fputs(" area_light ", f);
 			pov_vec(f, a->axis[0]);
@@ -690,6 +691,8 @@ static void write_lights(struct pov *p)
 			pov_vec(f, a->axis[1]);
 			fprintf(f, ", %d, %d%s%s%s", a->size[0], a->size[1], a->jitter ? " jitter" : "",
 			        a->circular ? " circular" : "", a->orient ? " orient" : "");
+			if (p->opt->area_adaptive > 0)
+				fprintf(f, " adaptive %d", p->opt->area_adaptive - 1);
 		}
 		if (l->fade_power > 0) {
 			fputs(" fade_distance ", f);

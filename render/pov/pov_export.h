@@ -26,6 +26,11 @@ struct pov_export_options {
 	const double *look_at, *up;
 	double fov;
 	const double *sky_rotate;      /* SKY_LATLONG: the rotation in degrees, when known */
+	/* Every area_light's adaptive level plus one: 0 (the default, so that an initialiser
+	 * that leaves it out means it) writes no adaptive keyword, POV-Ray's full subdivision
+	 * that scn computes; K + 1 writes "adaptive K" (scn converge, to time POV-Ray at each
+	 * level). */
+	int area_adaptive;
 };
 
 /* Writes sc to out. Returns 0, or an errno code with a message in err (a write error,

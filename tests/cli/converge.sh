@@ -1,7 +1,8 @@
 # converge.sh: `scn converge` (LANGUAGE.md section 8) on a small scene at 32 x 24: the
 # table's rows and columns, error falling as jittered samples rise, the CSV and the SVG
 # plot well formed, the budget, a reference file, exit statuses; and, when povray is
-# installed, one quick run with the POV-Ray series and the equal-error line.
+# installed, one quick run with the POV-Ray series and the equal-error line, and one of a
+# soft-shadow scene with a series per area_light adaptive level.
 . "$SCN_SRCDIR/tests/lib.sh"
 
 cd "$work" || exit 99
@@ -129,5 +130,27 @@ awk -F, '$2 == "-A" || ($1 == "scn grid" && $3 == 1) { r[n++] = $5 }
 	{ fail "POV-Ray -A and scn grid count 1 differ in RMSE"; cat p.csv; }
 tail -n 1 pov.txt | grep -Eq "^at equal error \(RMSE $num\), scn takes $num s and POV-Ray $num s: scn/POV-Ray = $num \(scn [a-z]+\)\$" ||
 	fail "the last line is '$(tail -n 1 pov.txt)'"
+[ -z "$(ls tmp)" ] || fail "the POV-Ray folder was left: $(ls tmp)"
+
+# --- soft shadows: one more POV-Ray series per area_light adaptive level below the full
+# subdivision (a 5 x 5 light: levels 0 and 1), each in the table, the CSV and the plot, and
+# the last line names the fastest ---
+cat >soft.scn <<'EOF'
+camera { location <0, 3, -7>  look_at <0, 0.8, 0>  fov 50  resolution 64, 48 }
+light  { position <-3, 6, -3>  area { <2, 0, 0>, <0, 0, 2>, 5, 5  jitter } }
+plane  { <0, 1, 0>, 0  material { diffuse <0.8, 0.8, 0.8> } }
+sphere { <-1, 1, 0>, 1  material { diffuse <0.9, 0.3, 0.2> } }
+EOF
+expect_status 0 "$SCN" converge soft.scn -W 16 --reference-samples 16 --budget 20 -j 2 --csv s.csv --plot s.svg -q
+cp "$work/out" soft.txt
+for series in 'POV-Ray' 'POV-Ray adaptive 0' 'POV-Ray adaptive 1'; do
+	expect_grep soft.txt "^$series +-A +1 +[0-9]+\.[0-9]{3} +$num +-\$"
+	expect_grep s.csv "^$series,-A,1,"
+	expect_grep s.svg ">$series</text>"
+done
+grep -q '^POV-Ray adaptive 2 ' soft.txt && fail "a POV-Ray series at adaptive 2, which is a 5 x 5 light's full subdivision"
+[ "$(grep -c '^<polyline ' s.svg)" -eq 8 ] || fail "s.svg has $(grep -c '^<polyline ' s.svg) polylines, not 8"
+tail -n 1 soft.txt | grep -Eq "^at equal error \(RMSE $num\), scn takes $num s and POV-Ray $num s: scn/POV-Ray = $num \(scn [a-z]+; POV-Ray's fastest there: POV-Ray( adaptive [01])?\)\$" ||
+	fail "the last line is '$(tail -n 1 soft.txt)'"
 [ -z "$(ls tmp)" ] || fail "the POV-Ray folder was left: $(ls tmp)"
 finish
