@@ -100,7 +100,7 @@ static bool add_plane(struct bvh_region *region, struct vec3 n, struct vec3 at, 
 }
 
 bool light_area_region(const struct area_light *a, const struct vec3 axes[2], struct vec3 centre, struct vec3 apex,
-                       double margin, struct bvh_region *region)
+                       double margin, struct bvh_region *region, struct vec3 corner[4])
 {
 	if (a->size[0] < 2 || a->size[1] < 2)
 		return false;
@@ -109,10 +109,10 @@ bool light_area_region(const struct area_light *a, const struct vec3 axes[2], st
 	struct vec3 half[2];
 	for (int k = 0; k < 2; k++)
 		half[k] = vscale(axes[k], 0.501 + (a->jitter ? 0.5 * a->inv_span[k] : 0));
-	struct vec3 corner[4] = {
-		vsub(vsub(centre, half[0]), half[1]), vsub(vadd(centre, half[0]), half[1]),
-		vadd(vadd(centre, half[0]), half[1]), vadd(vsub(centre, half[0]), half[1]),
-	};
+	corner[0] = vsub(vsub(centre, half[0]), half[1]);
+	corner[1] = vsub(vadd(centre, half[0]), half[1]);
+	corner[2] = vadd(vadd(centre, half[0]), half[1]);
+	corner[3] = vadd(vsub(centre, half[0]), half[1]);
 	region->nplanes = 0;
 	for (int i = 0; i < 4; i++) {
 		struct vec3 n = vcross(vsub(corner[i], apex), vsub(corner[(i + 1) % 4], apex));

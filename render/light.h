@@ -32,6 +32,6 @@ struct vec3 light_area_offset(const struct area_light *a, const struct vec3 axes
  * origins move off apex. False when the light is a line or a point, whose region would
  * not be bounded. */
 bool light_area_region(const struct area_light *a, const struct vec3 axes[2], struct vec3 centre, struct vec3 apex,
-                       double margin, struct bvh_region *region);
+                       double margin, struct bvh_region *region, struct vec3 corner[4]);
 
 #endif

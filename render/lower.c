@@ -406,6 +406,14 @@ static int32_t lower_area_light(struct scene *out, const struct light_desc *l)
 		a->inv_span[k] = a->size[k] > 1 ? 1.0 / (a->size[k] - 1) : 0;
 		light_area_weights(a->size[k], a->weight[k]);
 	}
+	a->tests = 0;
+	a->weight_sum = 0;
+	for (int u = 0; u < a->size[0]; u++)
+		for (int v = 0; v < a->size[1]; v++) /* as area_visibility adds them */
+			if (a->weight[0][u] * a->weight[1][v] > 0) {
+				a->tests++;
+				a->weight_sum += a->weight[0][u] * a->weight[1][v];
+			}
 	a->jitter = l->area_jitter;
 	a->orient = l->area_orient;
 	a->circular = l->area_circular || l->area_orient; /* POV-Ray makes an oriented light circular */

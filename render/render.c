@@ -235,6 +235,7 @@ int render_image(const struct scene *sc, const struct render_options *opt, struc
 		st->probe_pixels += workers[i].stats.probe_pixels;
 		st->shadow += workers[i].stats.shadow;
 		st->area_shadow += workers[i].stats.area_shadow;
+		st->area_settled += workers[i].stats.area_settled;
 		st->reflection += workers[i].stats.reflection;
 		st->refraction += workers[i].stats.refraction;
 		st->nonfinite += workers[i].stats.nonfinite;

@@ -48,6 +48,8 @@ struct area_light {
 	bool circular;                 /* the grid pulled in onto a disc */
 	bool orient;                   /* turned to face each lit point (and so circular) */
 	double inv_span[2];            /* 1 / (size - 1), 0 for a size of 1 (no division per test) */
+	int tests;                     /* size[0] * size[1] less those of weight 0 */
+	double weight_sum;             /* of the tests' weights, added in the tests' order */
 	double weight[2][AREA_MAX];    /* along each axis, POV-Ray's recursive corner weights:
 	                                * the test at (u, v) weighs weight[0][u] * weight[1][v] */
 };

@@ -84,29 +84,64 @@ enum { AREA_SHARED_MIN = 25, AREA_LEAVES = 32 };
  * li->pos, in unit direction l from the point), as POV-Ray's weighted average of
  * them: each a shadow test from shadow_from towards the point, a jittered light placing
  * it at random in its cell from the sample's stream. Tests whose weight is 0 are skipped. */
+/* Whether no plane (but self's own, which a ray leaving it never meets again) and no
+ * unbounded solid can cross a segment inside the region with these vertices: each plane
+ * has them all on one side, farther than margin. */
+static bool open_beyond_planes(const struct geometry *geo, uint32_t self, const struct vec3 *vertex, int n,
+                               double margin)
+{
+	if (geo->nunbounded)
+		return false;
+	for (size_t i = 0; i < geo->nplanes; i++) {
+		if (shape_id(SHAPE_PLANE, (uint32_t)i) == self)
+			continue;
+		const struct plane *pl = &geo->planes[i];
+		int above = 0, below = 0;
+		for (int k = 0; k < n; k++) {
+			double d = vdot(pl->normal, vertex[k]) - pl->offset;
+			above += d > margin;
+			below += d < -margin;
+		}
+		if (above != n && below != n)
+			return false;
+	}
+	return true;
+}
+
 static struct vec3 area_visibility(const struct scene *sc, const struct light *li, const struct area_light *a,
-                                   const struct surface_point *shadow_from, struct vec3 l, uint64_t dim,
-                                   const struct sample_stream *ss, struct ray_stats *st)
+                                   const struct surface_point *shadow_from, uint32_t self, struct vec3 l,
+                                   uint64_t dim, const struct sample_stream *ss, struct ray_stats *st)
 {
 	struct vec3 axes[2];
 	light_area_axes(a, l, axes);
-	struct stream_dim sd;
-	if (a->jitter)
-		stream_dim(ss, dim, &sd);
+	/* a test's origin depends only on the side of the surface it leaves by */
+	struct vec3 from_front = ray_offset_origin(shadow_from, shadow_from->ng);
+	struct vec3 from_back = ray_offset_origin(shadow_from, vneg(shadow_from->ng));
 	/* the tests share one walk of the tree: the leaves that meet the pyramid from the
 	 * point to the light, which each test then tries in place of its own walk. Its margin
 	 * covers the tests' origins, moved off the point by at most its error bound (ray.h). */
 	struct bvh_leaf leaves[AREA_LEAVES];
 	int nleaves = -1;
 	struct bvh_region region;
+	struct vec3 vertex[6] = { from_front, from_back };
 	const struct vec3 pe = shadow_from->p_err, p = shadow_from->p;
 	double scale = fmax(fmax(fabs(p.x), fabs(p.y)), fmax(fabs(p.z), vlen(vsub(li->pos, p))));
+	double margin = 1e-9 * scale + 4 * (pe.x + pe.y + pe.z);
 	if (sc->accel.bvh && a->size[0] * a->size[1] >= AREA_SHARED_MIN &&
-	    light_area_region(a, axes, li->pos, p, 1e-9 * scale + 4 * (pe.x + pe.y + pe.z), &region))
+	    light_area_region(a, axes, li->pos, p, margin, &region, vertex + 2)) {
 		nleaves = bvh_gather(sc->accel.bvh, &region, leaves, AREA_LEAVES);
-	/* a test's origin depends only on the side of the surface it leaves by */
-	struct vec3 from_front = ray_offset_origin(shadow_from, shadow_from->ng);
-	struct vec3 from_back = ray_offset_origin(shadow_from, vneg(shadow_from->ng));
+		/* nothing in the pyramid, the point clear of the light's plane (no test point
+		 * on it), no plane across: every test passes, and the sum is the weights' */
+		const double *far = region.plane[4];
+		if (nleaves == 0 && far[3] - (far[0] * p.x + far[1] * p.y + far[2] * p.z) > 4 * margin &&
+		    open_beyond_planes(&sc->geo, self, vertex, 6, margin)) {
+			st->area_settled += (uint64_t)a->tests;
+			return v3s(a->weight_sum);
+		}
+	}
+	struct stream_dim sd;
+	if (a->jitter)
+		stream_dim(ss, dim, &sd);
 	struct vec3 sum = v3s(0);
 	for (int u = 0; u < a->size[0]; u++)
 		for (int v = 0; v < a->size[1]; v++) {
@@ -138,13 +173,13 @@ static struct vec3 area_visibility(const struct scene *sc, const struct light *l
 	return sum;
 }
 
-/* Direct light at sp from every light, seen along v with facing normal n; the shadow rays
- * start from shadow_from (shape_shadow_point). An area light is shaded once towards its
+/* Direct light at sp (on primitive self) from every light, seen along v with facing normal
+ * n; the shadow rays start from shadow_from (shape_shadow_point). An area light is shaded once towards its
  * centre, the test points only weighing how much of it arrives (POV-Ray's model). */
 static struct vec3 direct_light(const struct scene *sc, const struct surface_point *sp,
-                                const struct surface_point *shadow_from, struct vec3 n, struct vec3 v, struct vec3 kd,
-                                const struct material *m, uint64_t path_key, const struct sample_stream *ss,
-                                struct ray_stats *st)
+                                const struct surface_point *shadow_from, uint32_t self, struct vec3 n, struct vec3 v,
+                                struct vec3 kd, const struct material *m, uint64_t path_key,
+                                const struct sample_stream *ss, struct ray_stats *st)
 {
 	struct vec3 sum = v3s(0);
 	for (size_t i = 0; i < sc->nlights; i++) {
@@ -175,7 +210,7 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 		if (!li->shadowless && li->area >= 0) {
 			/* each branch of the sample's tree of rays, and each light, draws apart */
 			uint64_t dim = path_key * 0x100000001b3u + i;
-			color = vmul(color, area_visibility(sc, li, &sc->area_lights[li->area], shadow_from, l, dim, ss, st));
+			color = vmul(color, area_visibility(sc, li, &sc->area_lights[li->area], shadow_from, self, l, dim, ss, st));
 			if (vzero(color))
 				continue;
 		} else if (!li->shadowless) {
@@ -271,7 +306,7 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, struct path p
 			st->images += m->pigment == MATERIAL_IMAGE;
 			kd = shade_diffuse(sc, srf, m, &h, &sp);
 		}
-		color = vadd(color, direct_light(sc, &sp, &shadow_from, n, v, kd, m, path.key, ss, st));
+		color = vadd(color, direct_light(sc, &sp, &shadow_from, h.prim, n, v, kd, m, path.key, ss, st));
 	}
 	if (depth >= sc->max_depth)
 		return veil(sc, color, h.t, inside);

@@ -12,6 +12,8 @@
 struct ray_stats {
 	uint64_t camera, shadow, reflection, refraction;
 	uint64_t area_shadow;          /* shadow rays to area lights' test points, apart */
+	uint64_t area_settled;         /* area lights' tests settled without a ray: nothing in
+	                                * the way of any of a point's tests */
 	uint64_t patterns, images, bumps; /* lookups of colour patterns, image maps, bump patterns */
 	uint64_t nonfinite;            /* radiance samples that were NaN or infinite (must stay 0) */
 	uint64_t probe_pixels;         /* pixels rendered twice to estimate the error (render.c) */

@@ -231,7 +231,8 @@ static void print_stats(const struct load_times *lt, const struct lower_times *w
 	}
 	fprintf(stderr, "rays:  camera %llu  shadow %llu", (unsigned long long)st->camera, (unsigned long long)st->shadow);
 	if (sc->narea_lights) /* a scene's area-light tests, its dearest rays, apart from the point lights' */
-		fprintf(stderr, "  area shadow %llu", (unsigned long long)st->area_shadow);
+		fprintf(stderr, "  area shadow %llu (and %llu tests settled without one)", (unsigned long long)st->area_shadow,
+		        (unsigned long long)st->area_settled);
 	fprintf(stderr, "  reflection %llu  refraction %llu  total %llu\n", (unsigned long long)st->reflection,
 	        (unsigned long long)st->refraction,
 	        (unsigned long long)(st->camera + st->probe_camera + st->shadow + st->area_shadow + st->reflection +

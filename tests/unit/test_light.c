@@ -132,7 +132,8 @@ static void test_region(void)
 		struct vec3 axes[2];
 		light_area_axes(&a, vunit(vsub(centre, apex)), axes);
 		struct bvh_region region;
-		if (!light_area_region(&a, axes, centre, apex, 1e-9, &region))
+		struct vec3 corner[4];
+		if (!light_area_region(&a, axes, centre, apex, 1e-9, &region, corner))
 			continue; /* the light's plane through the apex: no bounded region */
 		for (int s = 0; s < 50; s++) {
 			/* grid corners, and the jitter's farthest reach */
