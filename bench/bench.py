@@ -50,9 +50,9 @@ def timed(cmd, cwd=None):
 
 STATS_TIME = re.compile(r"^time: parse ([0-9.]+)s  check ([0-9.]+)s  evaluate ([0-9.]+)s  load meshes ([0-9.]+)s"
                         r"  load images ([0-9.]+)s  build \w+ ([0-9.]+)s  render ([0-9.]+)s  write ([0-9.]+)s$", re.M)
-# "area shadow N" only for a scene with area lights
-STATS_RAYS = re.compile(r"^rays: +camera (\d+) +shadow (\d+) +(?:area shadow (\d+) +)?reflection (\d+) +refraction (\d+)"
-                        r" +total (\d+)$", re.M)
+# "area shadow N (and M tests settled without one)" only for a scene with area lights
+STATS_RAYS = re.compile(r"^rays: +camera (\d+) +shadow (\d+) +(?:area shadow (\d+) \(and \d+ tests settled without one\) +)?"
+                        r"reflection (\d+) +refraction (\d+) +total (\d+)$", re.M)
 
 
 def scn_stats(text):

@@ -11,24 +11,17 @@
 . "$SCN_SRCDIR/tests/lib.sh"
 cd "$work" || exit 99
 cat >soft.scn <<'SCENE'
-camera { location <0, 3, -6>  look_at <0, 0.6, 0>  fov 50  resolution 64, 48 }
+camera { location <0, 3, -6>  look_at <0, 0.6, 0>  fov 50 }
 light  { position <-2, 5, -1>  area { <2, 0, 0>, <0, 0, 2>, 4, 4  jitter } }
 plane  { <0, 1, 0>, 0  material { diffuse 0.8 } }
 sphere { <-0.6, 0.8, 0.3>, 0.8  material { diffuse <0.9, 0.5, 0.3> } }
 box    { <0.6, 0, -0.8>, <1.6, 1.2, 0.2>  material { diffuse 0.7 } }
 SCENE
-cat >blur.scn <<'SCENE'
-camera { location <0, 2, -6>  look_at <0, 0.6, 0>  fov 50  resolution 64, 48  aperture 0.8  focal_point <-0.6, 0.8, 0.3> }
-light  { position <-2, 5, -3> }
-plane  { <0, 1, 0>, 0  material { diffuse checker(<0.9, 0.9, 0.9>, <0.2, 0.3, 0.5>, 0.5) } }
-sphere { <-0.6, 0.8, 0.3>, 0.8  material { diffuse <0.9, 0.5, 0.3> } }
-box    { <0.6, 0, 1.8>, <1.6, 1.2, 2.8>  material { diffuse 0.7 } }
-sphere { <1.2, 0.3, -2.5>, 0.3  material { diffuse <0.3, 0.9, 0.4> } }
-SCENE
+cp "$SCN_SRCDIR/tests/cli/focal_blur.scn" blur.scn
 
 # estimated SCENE N PATTERN OUT: renders, prints the estimated RMSE
 estimated() {
-	expect_status 0 "$SCN" render "$1" -s "$2" -p "$3" -o "$4" --float
+	expect_status 0 "$SCN" render "$1" -W 64 -H 48 -s "$2" -p "$3" -o "$4" --float
 	sed -n 's/.*estimated RMSE \([0-9.e+-]*\)$/\1/p' "$work/err"
 }
 # measured A REF: scn diff's RMSE

@@ -19,15 +19,7 @@ sphere { <-0.6, 0.8, 0.3>, 0.8  material { diffuse <0.9, 0.5, 0.3> } }
 box    { <0.6, 0, -0.8>, <1.6, 1.2, 0.2>  material { diffuse 0.7 } }
 samples { count 4  pattern grid }
 SCENE
-cat >blur.scn <<'SCENE'
-camera { location <0, 2, -6>  look_at <0, 0.6, 0>  fov 50  resolution 96, 72  aperture 0.8  focal_point <-0.6, 0.8, 0.3> }
-light  { position <-2, 5, -3> }
-plane  { <0, 1, 0>, 0  material { diffuse checker(<0.9, 0.9, 0.9>, <0.2, 0.3, 0.5>, 0.5) } }
-sphere { <-0.6, 0.8, 0.3>, 0.8  material { diffuse <0.9, 0.5, 0.3> } }
-box    { <0.6, 0, 1.8>, <1.6, 1.2, 2.8>  material { diffuse 0.7 } }
-sphere { <1.2, 0.3, -2.5>, 0.3  material { diffuse <0.3, 0.9, 0.4> } }
-samples { count 37  pattern jittered }
-SCENE
+cp "$SCN_SRCDIR/tests/cli/focal_blur.scn" blur.scn
 for name in area blur; do
 	expect_status 0 "$SCN" pov $name.scn -o $name.pov
 	cmd=$(sed -n 's|^// Render: ||p' $name.pov)
