@@ -108,6 +108,16 @@ static bool open_beyond_planes(const struct geometry *geo, uint32_t self, const 
 	return true;
 }
 
+/* Whether the four corners of a light's extent lie in front of the surface at sp, farther
+ * than margin: every test towards it leaves by the front. */
+static bool in_front(const struct surface_point *sp, const struct vec3 corner[4], double margin)
+{
+	for (int k = 0; k < 4; k++)
+		if (!(vdot(vsub(corner[k], sp->p), sp->ng) > margin))
+			return false;
+	return true;
+}
+
 static struct vec3 area_visibility(const struct scene *sc, const struct light *li, const struct area_light *a,
                                    const struct surface_point *shadow_from, uint32_t self, struct vec3 l,
                                    uint64_t dim, const struct sample_stream *ss, struct ray_stats *st)
@@ -130,10 +140,18 @@ static struct vec3 area_visibility(const struct scene *sc, const struct light *l
 	if (sc->accel.bvh && a->size[0] * a->size[1] >= AREA_SHARED_MIN &&
 	    light_area_region(a, axes, li->pos, p, margin, &region, vertex + 2)) {
 		nleaves = bvh_gather(sc->accel.bvh, &region, leaves, AREA_LEAVES);
-		/* nothing in the pyramid, the point clear of the light's plane (no test point
-		 * on it), no plane across: every test passes, and the sum is the weights' */
+		/* nothing in the pyramid but the lit surface itself, when every test leaves it by
+		 * its front and it cannot be met again; the point clear of the light's plane (no
+		 * test point on it), no plane across: every test passes, and the sum is the
+		 * weights' */
 		const double *far = region.plane[4];
-		if (nleaves == 0 && far[3] - (far[0] * p.x + far[1] * p.y + far[2] * p.z) > 4 * margin &&
+		uint32_t harmless = UINT32_MAX;
+		/* not a triangle: a smooth one's tests start lifted off its plane (triangle_lift),
+		 * from where they might meet it */
+		if (shape_kind(self) != SHAPE_TRIANGLE && shape_convex(&sc->geo, self) && in_front(shadow_from, vertex + 2, margin))
+			harmless = self;
+		if (nleaves >= 0 && far[3] - (far[0] * p.x + far[1] * p.y + far[2] * p.z) > 4 * margin &&
+		    bvh_leaves_clear(sc->accel.bvh, &sc->geo, leaves, nleaves, &region, harmless) &&
 		    open_beyond_planes(&sc->geo, self, vertex, 6, margin)) {
 			st->area_settled += (uint64_t)a->tests;
 			return v3s(a->weight_sum);

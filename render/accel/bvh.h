@@ -51,6 +51,10 @@ struct bvh_leaf {
  * area light's, from one point): at most cap of them into leaves, and their number; -1
  * when there are more. A segment inside region meets no primitive outside them. */
 int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_leaf *leaves, int cap);
+/* Whether no primitive of leaves[0 .. n) but skip has bounds that meet region (a leaf of
+ * triangle packets, whose triangles are not named, counts as meeting it). */
+bool bvh_leaves_clear(const struct bvh *b, const struct geometry *geo, const struct bvh_leaf *leaves, int n,
+                      const struct bvh_region *region, uint32_t skip);
 /* bvh_transmittance of a ray that stays inside the region leaves[0 .. n) were gathered
  * for, which it walks in place of the tree. The same filters multiply, in the leaves'
  * order, which puts first the leaf that last turned a ray black: its neighbour rays are

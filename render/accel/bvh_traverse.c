@@ -365,7 +365,7 @@ struct vec3 bvh_transmittance(const struct bvh *b, const struct geometry *geo, c
 }
 
 /* Whether the box lo..hi lies wholly outside one of region's planes. */
-static bool box_outside(const float lo[3], const float hi[3], const struct bvh_region *region)
+static bool box_outside(const double lo[3], const double hi[3], const struct bvh_region *region)
 {
 	for (int k = 0; k < region->nplanes; k++) {
 		const double *p = region->plane[k];
@@ -382,7 +382,8 @@ int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_
 {
 	if (!b->nprims)
 		return 0;
-	if (box_outside(b->root.box, b->root.box + 3, region))
+	const float *rb = b->root.box;
+	if (box_outside((double[3]){ rb[0], rb[1], rb[2] }, (double[3]){ rb[3], rb[4], rb[5] }, region))
 		return 0;
 	int n = 0;
 	if (b->root.count) {
@@ -396,8 +397,8 @@ int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_
 	while (sp > 0) {
 		const struct bvh_node *node = &b->nodes[stack[--sp]];
 		for (int c = 0; c < WIDTH; c++) {
-			float lo[3] = { node->box[0][c], node->box[1][c], node->box[2][c] };
-			float hi[3] = { node->box[3][c], node->box[4][c], node->box[5][c] };
+			double lo[3] = { node->box[0][c], node->box[1][c], node->box[2][c] };
+			double hi[3] = { node->box[3][c], node->box[4][c], node->box[5][c] };
 			if (!(lo[0] <= hi[0]) || box_outside(lo, hi, region))
 				continue; /* an empty slot, or out of the region */
 			if (!node->count[c]) {
@@ -405,8 +406,9 @@ int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_
 			} else {
 				if (n == cap)
 					return -1;
-				leaves[n++] = (struct bvh_leaf){ { lo[0], lo[1], lo[2] }, { hi[0], hi[1], hi[2] }, node->index[c],
-				                                 node->count[c] };
+				leaves[n++] = (struct bvh_leaf){ { node->box[0][c], node->box[1][c], node->box[2][c] },
+				                                 { node->box[3][c], node->box[4][c], node->box[5][c] },
+				                                 node->index[c], node->count[c] };
 			}
 		}
 	}
@@ -448,4 +450,25 @@ struct vec3 bvh_transmittance_among(const struct bvh *b, const struct geometry *
 		}
 	}
 	return q.pass;
+}
+
+bool bvh_leaves_clear(const struct bvh *b, const struct geometry *geo, const struct bvh_leaf *leaves, int n,
+                      const struct bvh_region *region, uint32_t skip)
+{
+	for (int i = 0; i < n; i++) {
+		uint32_t count = leaves[i].count;
+		if (count & LEAF_PACKED)
+			return false; /* its triangles are in packets, not named one by one */
+		const uint32_t *ids = leaf_ids(b, leaves[i].index, count);
+		for (uint32_t k = 0; k < leaf_size(count); k++) {
+			uint32_t id = leaf_prim(ids, leaves[i].index, k);
+			if (id == skip)
+				continue;
+			struct vec3 lo, hi;
+			shape_bounds(geo, id, &lo, &hi);
+			if (!box_outside((double[3]){ lo.x, lo.y, lo.z }, (double[3]){ hi.x, hi.y, hi.z }, region))
+				return false;
+		}
+	}
+	return true;
 }

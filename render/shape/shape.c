@@ -21,6 +21,23 @@ void shape_bounds(const struct geometry *g, uint32_t id, struct vec3 *lo, struct
 	}
 }
 
+bool shape_convex(const struct geometry *g, uint32_t id)
+{
+	switch (shape_kind(id)) {
+	case SHAPE_SPHERE:
+	case SHAPE_TRIANGLE:
+	case SHAPE_PLANE:
+		return true;
+	default: {
+		if (shape_index(id) & SHAPE_UNBOUNDED)
+			return false;
+		const struct part *p = &g->parts[shape_solid_root(g, id)];
+		return !p->inverse && (p->kind == PART_SPHERE || p->kind == PART_BOX || p->kind == PART_DISC ||
+		                       (p->kind == PART_CONE && !p->open));
+	}
+	}
+}
+
 bool shape_solid_intersect(const struct geometry *g, uint32_t id, const struct ray *r, struct hit *h)
 {
 	struct csg_hit c;

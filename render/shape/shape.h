@@ -55,6 +55,12 @@ struct vec3 shape_solid_filter(const struct geometry *g, uint32_t id, const stru
  * an accelerator widens them outward. */
 void shape_bounds(const struct geometry *g, uint32_t id, struct vec3 *lo, struct vec3 *hi);
 
+/* Whether a ray leaving the surface of primitive id by the side its geometric normal
+ * points to can never meet it again: the surface bounds a convex body or is flat (a
+ * sphere, a triangle, a plane, a solid of one sphere, box, disc, or closed cone or
+ * cylinder, not inverted). */
+bool shape_convex(const struct geometry *g, uint32_t id);
+
 /* triangle_ray_init() where g has triangles, the only case where tr is read. */
 static inline void shape_triangle_ray(const struct geometry *g, const struct ray *r, struct triangle_ray *tr)
 {
