@@ -469,9 +469,10 @@ enum load_status lower_scene(struct diag *d, const struct scene_desc *desc, stru
 			li->cos_falloff = cos(l->falloff * (M_PI / 180));
 			li->tightness = l->tightness;
 		}
-		if (!l->directional) /* an area light's test points reach past its axes by half a cell when jittered */
-			lower_check_extent(&lw, l->span, "this light",
-			                   lower_extent_of(li->pos) + (l->area ? vlen(v3a(l->area_axis[0])) + vlen(v3a(l->area_axis[1])) : 0));
+		/* an area light's test points reach past its axes by half a cell when jittered */
+		double reach = l->area ? vlen(v3a(l->area_axis[0])) + vlen(v3a(l->area_axis[1])) : 0;
+		if (!l->directional)
+			lower_check_extent(&lw, l->span, "this light", lower_extent_of(li->pos) + reach);
 	}
 
 	lower_texture_begin(&lw.tex, d, desc, out);

@@ -80,10 +80,6 @@ static bool any_positive(struct vec3 v)
  * slower at 2 x 2, where the pyramid's walk costs more than the four walks it replaces. */
 enum { AREA_SHARED_MIN = 25, AREA_LEAVES = 32 };
 
-/* The light reaching a surface point from the test points of area light a (its centre at
- * li->pos, in unit direction l from the point), as POV-Ray's weighted average of
- * them: each a shadow test from shadow_from towards the point, a jittered light placing
- * it at random in its cell from the sample's stream. Tests whose weight is 0 are skipped. */
 /* Whether no plane (but self's own, which a ray leaving it never meets again) and no
  * unbounded solid can cross a segment inside the region with these vertices: each plane
  * has them all on one side, farther than margin. */
@@ -118,6 +114,53 @@ static bool in_front(const struct surface_point *sp, const struct vec3 corner[4]
 	return true;
 }
 
+enum { AREA_SETTLED = -2 };        /* share_walk: every test passes, without a ray */
+
+/* How the tests of area light a (axes as seen from the point) from shadow_from, on
+ * primitive self, whose origins are origin[0..1] (front, back), share their work: the
+ * number of leaves they share into leaves (the leaves the pyramid from the point to the
+ * light meets, which each test tries in place of its own walk of the tree); -1 when each
+ * walks the tree alone; AREA_SETTLED when nothing can be in their way: no leaf holds a
+ * primitive whose bounds meet the pyramid but the lit surface itself, where every test
+ * leaves it by its front and it cannot be met again; the point is clear of the light's
+ * plane (no test point on it); and no plane crosses the pyramid. The pyramid's margin
+ * covers the tests' origins, moved off the point by at most its error bound (ray.h). */
+static int share_walk(const struct scene *sc, const struct light *li, const struct area_light *a,
+                      const struct vec3 axes[2], const struct surface_point *shadow_from, uint32_t self,
+                      const struct vec3 origin[2], struct bvh_leaf leaves[AREA_LEAVES])
+{
+	if (!sc->accel.bvh || a->size[0] * a->size[1] < AREA_SHARED_MIN)
+		return -1;
+	const struct vec3 pe = shadow_from->p_err, p = shadow_from->p;
+	double scale = fmax(fmax(fabs(p.x), fabs(p.y)), fmax(fabs(p.z), vlen(vsub(li->pos, p))));
+	double margin = 1e-9 * scale + 4 * (pe.x + pe.y + pe.z);
+	struct bvh_region region;
+	struct vec3 vertex[6] = { origin[0], origin[1] };    /* then the extent's corners */
+	if (!light_area_region(a, axes, li->pos, p, margin, &region, vertex + 2))
+		return -1;
+	int n = bvh_gather(sc->accel.bvh, &region, leaves, AREA_LEAVES);
+	if (n < 0)
+		return -1;
+	/* not a triangle: a smooth one's tests start lifted off its plane (triangle_lift),
+	 * from where they might meet it */
+	uint32_t harmless = UINT32_MAX;
+	if (shape_kind(self) != SHAPE_TRIANGLE && shape_convex(&sc->geo, self) &&
+	    in_front(shadow_from, vertex + 2, margin))
+		harmless = self;
+	const double *far = region.plane[4];
+	if (far[3] - (far[0] * p.x + far[1] * p.y + far[2] * p.z) > 4 * margin &&
+	    bvh_leaves_clear(sc->accel.bvh, &sc->geo, leaves, n, &region, harmless) &&
+	    open_beyond_planes(&sc->geo, self, vertex, 6, margin))
+		return AREA_SETTLED;
+	return n;
+}
+
+/* The light reaching a surface point from the test points of area light a (its centre at
+ * li->pos, in unit direction l from the point), as POV-Ray's weighted average of them:
+ * each a shadow test from shadow_from (on primitive self) towards the point, a jittered
+ * light placing it at random in its cell from the sample's stream. Tests whose weight is
+ * 0 are skipped; tests that nothing can be in the way of pass without a ray, their sum
+ * the weights' as lowering added them in the tests' order (the bits the rays would give). */
 static struct vec3 area_visibility(const struct scene *sc, const struct light *li, const struct area_light *a,
                                    const struct surface_point *shadow_from, uint32_t self, struct vec3 l,
                                    uint64_t dim, const struct sample_stream *ss, struct ray_stats *st)
@@ -125,38 +168,15 @@ static struct vec3 area_visibility(const struct scene *sc, const struct light *l
 	struct vec3 axes[2];
 	light_area_axes(a, l, axes);
 	/* a test's origin depends only on the side of the surface it leaves by */
-	struct vec3 from_front = ray_offset_origin(shadow_from, shadow_from->ng);
-	struct vec3 from_back = ray_offset_origin(shadow_from, vneg(shadow_from->ng));
-	/* the tests share one walk of the tree: the leaves that meet the pyramid from the
-	 * point to the light, which each test then tries in place of its own walk. Its margin
-	 * covers the tests' origins, moved off the point by at most its error bound (ray.h). */
+	struct vec3 origin[2] = { ray_offset_origin(shadow_from, shadow_from->ng),
+		                  ray_offset_origin(shadow_from, vneg(shadow_from->ng)) };
 	struct bvh_leaf leaves[AREA_LEAVES];
-	int nleaves = -1;
-	struct bvh_region region;
-	struct vec3 vertex[6] = { from_front, from_back };
-	const struct vec3 pe = shadow_from->p_err, p = shadow_from->p;
-	double scale = fmax(fmax(fabs(p.x), fabs(p.y)), fmax(fabs(p.z), vlen(vsub(li->pos, p))));
-	double margin = 1e-9 * scale + 4 * (pe.x + pe.y + pe.z);
-	if (sc->accel.bvh && a->size[0] * a->size[1] >= AREA_SHARED_MIN &&
-	    light_area_region(a, axes, li->pos, p, margin, &region, vertex + 2)) {
-		nleaves = bvh_gather(sc->accel.bvh, &region, leaves, AREA_LEAVES);
-		/* nothing in the pyramid but the lit surface itself, when every test leaves it by
-		 * its front and it cannot be met again; the point clear of the light's plane (no
-		 * test point on it), no plane across: every test passes, and the sum is the
-		 * weights' */
-		const double *far = region.plane[4];
-		uint32_t harmless = UINT32_MAX;
-		/* not a triangle: a smooth one's tests start lifted off its plane (triangle_lift),
-		 * from where they might meet it */
-		if (shape_kind(self) != SHAPE_TRIANGLE && shape_convex(&sc->geo, self) && in_front(shadow_from, vertex + 2, margin))
-			harmless = self;
-		if (nleaves >= 0 && far[3] - (far[0] * p.x + far[1] * p.y + far[2] * p.z) > 4 * margin &&
-		    bvh_leaves_clear(sc->accel.bvh, &sc->geo, leaves, nleaves, &region, harmless) &&
-		    open_beyond_planes(&sc->geo, self, vertex, 6, margin)) {
-			st->area_settled += (uint64_t)a->tests;
-			return v3s(a->weight_sum);
-		}
+	int nleaves = share_walk(sc, li, a, axes, shadow_from, self, origin, leaves);
+	if (nleaves == AREA_SETTLED) {
+		st->area_settled += (uint64_t)a->tests;
+		return v3s(a->weight_sum);
 	}
+	const struct vec3 p = shadow_from->p;
 	struct stream_dim sd;
 	if (a->jitter)
 		stream_dim(ss, dim, &sd);
@@ -177,15 +197,16 @@ static struct vec3 area_visibility(const struct scene *sc, const struct light *l
 			struct vec3 to = vsub(q, p);
 			if (vzero(to))
 				continue; /* a test point on the lit point: no direction, as a point light */
-			struct ray shadow = { vdot(to, shadow_from->ng) < 0 ? from_back : from_front, v3s(0) };
+			struct ray shadow = { origin[vdot(to, shadow_from->ng) < 0], v3s(0) };
 			to = vsub(q, shadow.o);
 			double len = vlen(to), tmax = len * (1 - 1e-9);
 			if (!(tmax > 0))
 				continue;
 			shadow.d = vscale(to, 1 / len);
 			st->area_shadow++;
-			struct vec3 pass = nleaves >= 0 ? bvh_transmittance_among(sc->accel.bvh, &sc->geo, &shadow, tmax, leaves, nleaves)
-			                                : accel_transmittance(&sc->accel, &sc->geo, &shadow, tmax);
+			struct vec3 pass = nleaves >= 0
+			                           ? bvh_transmittance_among(sc->accel.bvh, &sc->geo, &shadow, tmax, leaves, nleaves)
+			                           : accel_transmittance(&sc->accel, &sc->geo, &shadow, tmax);
 			sum = vadd(sum, vscale(pass, w));
 		}
 	return sum;
