@@ -94,8 +94,8 @@ seed() {
 # The front end's dictionary: its keywords and built-in functions, read from their
 # tables so that it never falls behind them, its punctuation, and the fragments that
 # nest objects in a CSG (a member's block inside the CSG's, a for loop of members), that
-# define and call functions and macros, branch and index, and the surfaces' blocks and
-# names (which are not keywords).
+# define and call functions and macros, branch and index, the surfaces' blocks and names
+# (which are not keywords), and the lights' and camera's blocks.
 scene_dict() {
 	sed -n '/^static const char \*const names/,/^};/p' "$top_srcdir/lang/keywords.c" |
 		grep -o '"[a-z_]*"'
@@ -106,7 +106,9 @@ scene_dict() {
 		'm(<0, 0, 0>) ' 'if 1 < 2 { ' ' } else { ' ' } else if ' 'for x in [1, 2, 3] { ' '"a" + str(1)' 'xs[0]' \
 		'diffuse pattern { ' 'diffuse image { "' 'normal { ' 'colors [[0, <1, 0, 0>], [1, 1]]' 'gradient <1, 0, 0>' \
 		'marble' 'wood' 'bozo' 'granite' 'agate' 'spotted' 'leopard' 'onion' 'radial' 'bumps' 'dents' 'ripples' \
-		'waves' 'wrinkles' 'map uv' 'map spherical' 'map cylindrical' 'interpolate bilinear' 'uvs { '; do
+		'waves' 'wrinkles' 'map uv' 'map spherical' 'map cylindrical' 'interpolate bilinear' 'uvs { ' \
+		' area { <1, 0, 0>, <0, 0, 1>, 4, 4  jitter } ' ' spotlight { point_at <0, 0, 0> } ' ' fog { distance 5 } ' \
+		' aperture 0.5  focal_point <0, 0, 2> '; do
 		printf '"%s"\n' "$(printf %s "$t" | sed 's/[\\"]/\\&/g')"
 	done
 }
