@@ -196,10 +196,7 @@ static void eval_area(struct evaluator *ev, struct ast *ar, struct light_desc *l
 		           n[0] < 2 ? n[0] : n[1]);
 	else if (orient && axes) {
 		/* POV-Ray's own warnings: an oriented light is a disc, square to each lit point */
-		double len[2];
-		for (int k = 0; k < 2; k++)
-			len[k] = sqrt(l->area_axis[k][0] * l->area_axis[k][0] + l->area_axis[k][1] * l->area_axis[k][1] +
-			              l->area_axis[k][2] * l->area_axis[k][2]);
+		double len[2] = { norm(l->area_axis[0]), norm(l->area_axis[1]) };
 		if (fabs(len[0] - len[1]) > 1e-9 * fmax(len[0], len[1]))
 			diag_warning(ev->diag, orient->u.item.name_span, "an oriented area light takes AXIS1's length for both "
 			             "axes: AXIS2's is ignored");

@@ -29,8 +29,9 @@ struct vec3 light_area_offset(const struct area_light *a, const struct vec3 axes
 /* The convex region (a pyramid from apex to the light's extent, jitter included, and the
  * light's plane) that holds every shadow test of a from apex, with axes as
  * light_area_axes gives them: widened by margin, which must cover the distance the tests'
- * origins move off apex. False when the light is a line or a point, whose region would
- * not be bounded. */
+ * origins move off apex; its planes are the four sides, then (plane 4) the light's. And
+ * the extent's corners. False when the light is a line or a point, whose region would not
+ * be bounded. */
 bool light_area_region(const struct area_light *a, const struct vec3 axes[2], struct vec3 centre, struct vec3 apex,
                        double margin, struct bvh_region *region, struct vec3 corner[4]);
 

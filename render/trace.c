@@ -76,8 +76,9 @@ static bool any_positive(struct vec3 v)
  * AREA_SHARED_MIN of them and its pyramid meets at most AREA_LEAVES leaves; else each
  * walks the tree on its own. Measured on the headline's 1000 spheres under one jittered
  * area light (user time at -j 1, medians of alternating runs): the shared walk is 30%
- * faster for the whole render at 8 x 8 tests and 35% at 16 x 16, even at 4 x 4, and 40%
- * slower at 2 x 2, where the pyramid's walk costs more than the four walks it replaces. */
+ * faster for the whole render at 8 x 8 tests and 35% at 16 x 16, no faster at 4 x 4, and
+ * 40% slower at 2 x 2, where the pyramid's walk costs more than the four walks it
+ * replaces. Settling tests too changed nothing at 4 x 4 (the still life). */
 enum { AREA_SHARED_MIN = 25, AREA_LEAVES = 32 };
 
 /* Whether no plane (but self's own, which a ray leaving it never meets again) and no
@@ -114,6 +115,18 @@ static bool in_front(const struct surface_point *sp, const struct vec3 corner[4]
 	return true;
 }
 
+/* Aims shadow (its origin set) at point q: a segment that ends just short of q, a relative
+ * end, so that a light needs no tolerance (NUMERICS.md section 3). Its tmax; 0 or less,
+ * with nothing set, when the origin is on q. */
+static double aim_at(struct ray *shadow, struct vec3 q)
+{
+	struct vec3 to = vsub(q, shadow->o);
+	double len = vlen(to), tmax = len * (1 - 1e-9);
+	if (tmax > 0)
+		shadow->d = vscale(to, 1 / len);
+	return tmax;
+}
+
 enum { AREA_SETTLED = -2 };        /* share_walk: every test passes, without a ray */
 
 /* How the tests of area light a (axes as seen from the point) from shadow_from, on
@@ -147,7 +160,7 @@ static int share_walk(const struct scene *sc, const struct light *li, const stru
 	if (shape_kind(self) != SHAPE_TRIANGLE && shape_convex(&sc->geo, self) &&
 	    in_front(shadow_from, vertex + 2, margin))
 		harmless = self;
-	const double *far = region.plane[4];
+	const double *far = region.plane[4];   /* the light's plane (light_area_region) */
 	if (far[3] - (far[0] * p.x + far[1] * p.y + far[2] * p.z) > 4 * margin &&
 	    bvh_leaves_clear(sc->accel.bvh, &sc->geo, leaves, n, &region, harmless) &&
 	    open_beyond_planes(&sc->geo, self, vertex, 6, margin))
@@ -198,11 +211,9 @@ static struct vec3 area_visibility(const struct scene *sc, const struct light *l
 			if (vzero(to))
 				continue; /* a test point on the lit point: no direction, as a point light */
 			struct ray shadow = { origin[vdot(to, shadow_from->ng) < 0], v3s(0) };
-			to = vsub(q, shadow.o);
-			double len = vlen(to), tmax = len * (1 - 1e-9);
+			double tmax = aim_at(&shadow, q);
 			if (!(tmax > 0))
 				continue;
-			shadow.d = vscale(to, 1 / len);
 			st->area_shadow++;
 			struct vec3 pass = nleaves >= 0
 			                           ? bvh_transmittance_among(sc->accel.bvh, &sc->geo, &shadow, tmax, leaves, nleaves)
@@ -253,18 +264,11 @@ static struct vec3 direct_light(const struct scene *sc, const struct surface_poi
 			if (vzero(color))
 				continue;
 		} else if (!li->shadowless) {
-			/* a segment from just off the surface to the light: relative end, so the
-			 * light itself needs no tolerance (NUMERICS.md section 3) */
+			/* a segment from just off the surface to the light */
 			struct ray shadow = { ray_offset_origin(shadow_from, l), l };
 			double tmax = INFINITY;
-			if (li->kind == LIGHT_POINT) {
-				struct vec3 to = vsub(li->pos, shadow.o);
-				double len = vlen(to);
-				tmax = len * (1 - 1e-9);
-				if (!(tmax > 0))
-					continue;
-				shadow.d = vscale(to, 1 / len);
-			}
+			if (li->kind == LIGHT_POINT && !((tmax = aim_at(&shadow, li->pos)) > 0))
+				continue;
 			st->shadow++;
 			color = vmul(color, accel_transmittance(&sc->accel, &sc->geo, &shadow, tmax));
 			if (vzero(color))

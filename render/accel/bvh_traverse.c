@@ -378,21 +378,27 @@ static bool box_outside(const double lo[3], const double hi[3], const struct bvh
 	return false;
 }
 
+/* A leaf of box lo..hi (floats held in double: exact both ways). */
+static struct bvh_leaf leaf_of(const double lo[3], const double hi[3], uint32_t index, uint32_t count)
+{
+	return (struct bvh_leaf){ { (float)lo[0], (float)lo[1], (float)lo[2] }, { (float)hi[0], (float)hi[1], (float)hi[2] },
+		                  index, count };
+}
+
 int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_leaf *leaves, int cap)
 {
 	if (!b->nprims)
 		return 0;
 	const float *rb = b->root.box;
-	if (box_outside((double[3]){ rb[0], rb[1], rb[2] }, (double[3]){ rb[3], rb[4], rb[5] }, region))
+	double root_lo[3] = { rb[0], rb[1], rb[2] }, root_hi[3] = { rb[3], rb[4], rb[5] };
+	if (box_outside(root_lo, root_hi, region))
 		return 0;
-	int n = 0;
 	if (b->root.count) {
-		const float *bx = b->root.box;
-		leaves[n++] = (struct bvh_leaf){ { bx[0], bx[1], bx[2] }, { bx[3], bx[4], bx[5] }, b->root.index, b->root.count };
-		return n;
+		leaves[0] = leaf_of(root_lo, root_hi, b->root.index, b->root.count);
+		return 1;
 	}
 	uint32_t stack[(WIDTH - 1) * MAX_DEPTH + WIDTH];
-	int sp = 0;
+	int sp = 0, n = 0;
 	stack[sp++] = b->root.index;
 	while (sp > 0) {
 		const struct bvh_node *node = &b->nodes[stack[--sp]];
@@ -406,9 +412,7 @@ int bvh_gather(const struct bvh *b, const struct bvh_region *region, struct bvh_
 			} else {
 				if (n == cap)
 					return -1;
-				leaves[n++] = (struct bvh_leaf){ { node->box[0][c], node->box[1][c], node->box[2][c] },
-				                                 { node->box[3][c], node->box[4][c], node->box[5][c] },
-				                                 node->index[c], node->count[c] };
+				leaves[n++] = leaf_of(lo, hi, node->index[c], node->count[c]);
 			}
 		}
 	}
