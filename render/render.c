@@ -1,6 +1,8 @@
-/* render.c: the render loop, written once: worker threads take 16x16 tiles from a shared
- * counter, and every pixel's value depends only on the pixel and its samples, so the
- * image is the same whatever the thread count or tile order. No locks per pixel. */
+/* render.c: the render loop, written once: worker threads take 16x16 tiles as they are
+ * fed (all at once for render_image, a few at a time from another process for a render
+ * over processes), and every pixel's value depends only on the pixel and its samples, so
+ * the image is the same whatever the thread count, process count or tile order. One
+ * lock per tile, none per pixel. */
 #include "render.h"
 
 #include <math.h>
@@ -19,24 +21,35 @@
 #include "stream.h"
 #include "xalloc.h"
 
-enum { TILE = 16 };
+/* Tiles fed and not yet taken: ranges in the order fed. */
+struct feed_range {
+	int first, count;
+};
 
-struct job {
+struct worker;
+
+struct render_pool {
 	const struct scene *sc;
-	const struct sampler *proto;   /* each worker samples through a clone of it */
-	const struct render_options *opt;
-	struct image *img;
-	int tiles_x, ntiles;
+	struct sampler *proto;         /* each worker samples through a clone of it */
+	struct render_options opt;
+	struct render_sink sink;
+	int ntiles;
 	double probe_share;            /* of the pixels, chosen by hash, that estimate the error */
-	atomic_int next_tile;
+	double *tile_probe;            /* per tile: render_pool_tile_probes */
+	pthread_mutex_t lock;          /* over the feed, taken once per tile */
+	pthread_cond_t fed;
+	struct feed_range *ranges;
+	size_t head, nranges, cap;     /* ranges[head .. nranges) are left */
+	bool closed;
 	atomic_int done_tiles;
+	struct worker *workers;
+	int started;
 };
 
 struct worker {
 	pthread_t thread;
-	struct job *job;
+	struct render_pool *pool;
 	struct ray_stats stats;
-	double probe_sq;               /* sum over its probe pixels of the squared replica difference */
 };
 
 /* Samples before an adaptive pixel may stop: fewer give too rough a variance estimate
@@ -126,47 +139,81 @@ static struct vec3 pixel_mean(const struct scene *sc, struct sampler *sm, double
 	return mean;
 }
 
-static void render_tile(struct job *job, struct sampler *sm, double *xy, int tile, struct ray_stats *st,
-                        double *probe_sq)
+int render_tile_count(const struct render_options *opt)
 {
-	const struct render_options *opt = job->opt;
-	const struct scene *sc = job->sc;
-	int tx = opt->x0 + (tile % job->tiles_x) * TILE, ty = opt->y0 + (tile / job->tiles_x) * TILE;
-	for (int py = ty; py < ty + TILE && py < opt->y1; py++)
-		for (int px = tx; px < tx + TILE && px < opt->x1; px++) {
+	return ((opt->x1 - opt->x0 + RENDER_TILE - 1) / RENDER_TILE) * ((opt->y1 - opt->y0 + RENDER_TILE - 1) / RENDER_TILE);
+}
+
+void render_tile_rect(const struct render_options *opt, int t, int *x, int *y, int *w, int *h)
+{
+	int tiles_x = (opt->x1 - opt->x0 + RENDER_TILE - 1) / RENDER_TILE;
+	*x = opt->x0 + (t % tiles_x) * RENDER_TILE;
+	*y = opt->y0 + (t / tiles_x) * RENDER_TILE;
+	*w = opt->x1 - *x < RENDER_TILE ? opt->x1 - *x : RENDER_TILE;
+	*h = opt->y1 - *y < RENDER_TILE ? opt->y1 - *y : RENDER_TILE;
+}
+
+static void render_tile(struct render_pool *p, struct sampler *sm, double *xy, int t, struct ray_stats *st)
+{
+	const struct scene *sc = p->sc;
+	int tx, ty, tw, th;
+	render_tile_rect(&p->opt, t, &tx, &ty, &tw, &th);
+	size_t stride;
+	float *row = p->sink.pixels(p->sink.ctx, t, &stride);
+	double probe_sq = 0;
+	for (int py = ty; py < ty + th; py++, row += stride)
+		for (int px = tx; px < tx + tw; px++) {
 			struct vec3 c = pixel_mean(sc, sm, xy, px, py, 0, st, &st->camera);
-			if (job->probe_share > 0 &&
-			    sampler_hash01(sc->sampling.seed, (uint64_t)px, (uint64_t)py, PROBE_KEY) < job->probe_share) {
+			if (p->probe_share > 0 &&
+			    sampler_hash01(sc->sampling.seed, (uint64_t)px, (uint64_t)py, PROBE_KEY) < p->probe_share) {
 				struct vec3 d = vsub(c, pixel_mean(sc, sm, xy, px, py, 1, st, &st->probe_camera));
-				*probe_sq += vdot(d, d);
+				probe_sq += vdot(d, d);
 				st->probe_pixels++;
 			}
-			float *out = &job->img->rgb[3 * ((size_t)(py - opt->y0) * (size_t)job->img->width + (size_t)(px - opt->x0))];
+			float *out = row + 3 * (size_t)(px - tx);
 			out[0] = (float)c.x;
 			out[1] = (float)c.y;
 			out[2] = (float)c.z;
 		}
+	p->tile_probe[t] = probe_sq;
+}
+
+/* The next tile fed, waiting for one; -1 once the pool is closed and none is left. */
+static int take_tile(struct render_pool *p)
+{
+	pthread_mutex_lock(&p->lock);
+	while (p->head == p->nranges && !p->closed)
+		pthread_cond_wait(&p->fed, &p->lock);
+	int t = -1;
+	if (p->head < p->nranges) {
+		struct feed_range *r = &p->ranges[p->head];
+		t = r->first++;
+		if (--r->count == 0)
+			p->head++;
+	}
+	pthread_mutex_unlock(&p->lock);
+	return t;
 }
 
 static void *work(void *arg)
 {
 	struct worker *w = arg;
-	struct job *job = w->job;
-	struct sampler *sm = sampler_clone(job->proto);
-	double *xy = xmalloc(2 * (size_t)job->sc->sampling.count * sizeof *xy);
-	for (;;) {
-		int tile = atomic_fetch_add(&job->next_tile, 1);
-		if (tile >= job->ntiles)
-			break;
-		render_tile(job, sm, xy, tile, &w->stats, &w->probe_sq);
-		atomic_fetch_add(&job->done_tiles, 1);
+	struct render_pool *p = w->pool;
+	struct sampler *sm = sampler_clone(p->proto);
+	double *xy = xmalloc(2 * (size_t)p->sc->sampling.count * sizeof *xy);
+	int t;
+	while ((t = take_tile(p)) >= 0) {
+		render_tile(p, sm, xy, t, &w->stats);
+		if (p->sink.done)
+			p->sink.done(p->sink.ctx, t);
+		atomic_fetch_add(&p->done_tiles, 1);
 	}
 	free(xy);
 	sampler_free(sm);
 	return NULL;
 }
 
-static void show_progress(int done, int total, double elapsed)
+void render_progress_show(int done, int total, double elapsed)
 {
 	enum { WIDTH = 30 };
 	double f = total ? (double)done / total : 1;
@@ -181,73 +228,141 @@ static void show_progress(int done, int total, double elapsed)
 		fprintf(stderr, "\r[%s] %3.0f%%  %.1fs   ", line, 100 * f, elapsed);
 }
 
-int render_image(const struct scene *sc, const struct render_options *opt, struct image *img, struct ray_stats *st)
+struct render_pool *render_pool_start(const struct scene *sc, const struct render_options *opt,
+                                      const struct render_sink *sink)
 {
-	struct job job = { .sc = sc, .opt = opt, .img = img };
-	struct sampler *proto = sampler_new(&sc->sampling);
-	job.proto = proto;
-	job.tiles_x = (opt->x1 - opt->x0 + TILE - 1) / TILE;
-	job.ntiles = job.tiles_x * ((opt->y1 - opt->y0 + TILE - 1) / TILE);
-	size_t npixels = (size_t)(opt->x1 - opt->x0) * (size_t)(opt->y1 - opt->y0);
+	struct render_pool *p = xcalloc(1, sizeof *p);
+	p->sc = sc;
+	p->opt = *opt;
+	p->sink = *sink;
+	p->proto = sampler_new(&sc->sampling);
+	p->ntiles = render_tile_count(opt);
+	p->tile_probe = xcalloc((size_t)p->ntiles + 1, sizeof *p->tile_probe);
+	int64_t npixels = opt->whole_pixels > 0 ? opt->whole_pixels : (int64_t)(opt->x1 - opt->x0) * (opt->y1 - opt->y0);
 	/* the center and grid patterns are the same in both replicas, unless the samples also
 	 * draw from their streams */
 	if ((sc->streams || (sc->sampling.kind != SAMPLE_CENTER && sc->sampling.kind != SAMPLE_GRID)) && npixels > 0)
-		job.probe_share = fmin(1, fmax(PROBE_SHARE, PROBE_MIN / (double)npixels));
-	atomic_init(&job.next_tile, 0);
-	atomic_init(&job.done_tiles, 0);
+		p->probe_share = fmin(1, fmax(PROBE_SHARE, PROBE_MIN / (double)npixels));
+	pthread_mutex_init(&p->lock, NULL);
+	pthread_cond_init(&p->fed, NULL);
+	atomic_init(&p->done_tiles, 0);
 	int nthreads = opt->threads > 0 ? opt->threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
 	if (nthreads < 1)
 		nthreads = 1;
-	if (nthreads > job.ntiles && job.ntiles > 0)
-		nthreads = job.ntiles;
-	struct worker *workers = xcalloc((size_t)nthreads, sizeof *workers);
-	int started = 0;
+	if (nthreads > p->ntiles && p->ntiles > 0)
+		nthreads = p->ntiles;
+	p->workers = xcalloc((size_t)nthreads, sizeof *p->workers);
 	sigset_t mask;
 	cleanup_block_signals(&mask);  /* the workers inherit it: a signal is handled on this thread */
 	for (int i = 0; i < nthreads; i++) {
-		workers[i].job = &job;
-		if (pthread_create(&workers[i].thread, NULL, work, &workers[i]) != 0)
+		p->workers[i].pool = p;
+		if (pthread_create(&p->workers[i].thread, NULL, work, &p->workers[i]) != 0)
 			break;
-		started++;
+		p->started++;
 	}
 	cleanup_restore_signals(&mask);
-	if (started == 0) {
-		free(workers);
-		sampler_free(proto);
-		return -1;
+	if (p->started == 0) {
+		struct ray_stats unused;
+		render_pool_finish(p, NULL, &unused);
+		return NULL;
 	}
-	if (opt->progress) {
-		double t0 = clock_now();
-		while (atomic_load(&job.done_tiles) < job.ntiles) {
-			show_progress(atomic_load(&job.done_tiles), job.ntiles, clock_now() - t0);
-			nanosleep(&(struct timespec){ 0, 200 * 1000 * 1000 }, NULL);
+	return p;
+}
+
+void render_pool_feed(struct render_pool *p, int first, int count)
+{
+	if (count <= 0)
+		return;
+	pthread_mutex_lock(&p->lock);
+	if (p->nranges == p->cap) {
+		/* the ranges taken make room first */
+		memmove(p->ranges, p->ranges + p->head, (p->nranges - p->head) * sizeof *p->ranges);
+		p->nranges -= p->head;
+		p->head = 0;
+		if (p->nranges == p->cap) {
+			p->cap = p->cap ? 2 * p->cap : 8;
+			p->ranges = xrealloc(p->ranges, p->cap * sizeof *p->ranges);
 		}
-		show_progress(job.ntiles, job.ntiles, clock_now() - t0);
-		fputc('\n', stderr);
 	}
+	p->ranges[p->nranges++] = (struct feed_range){ first, count };
+	pthread_cond_broadcast(&p->fed);
+	pthread_mutex_unlock(&p->lock);
+}
+
+void render_pool_close(struct render_pool *p)
+{
+	pthread_mutex_lock(&p->lock);
+	p->closed = true;
+	pthread_cond_broadcast(&p->fed);
+	pthread_mutex_unlock(&p->lock);
+}
+
+int render_pool_done(struct render_pool *p)
+{
+	return atomic_load(&p->done_tiles);
+}
+
+double *render_pool_tile_probes(struct render_pool *p)
+{
+	return p->tile_probe;
+}
+
+void render_pool_finish(struct render_pool *p, const struct ray_stats *more, struct ray_stats *st)
+{
 	memset(st, 0, sizeof *st);
-	double probe_sq = 0;
-	for (int i = 0; i < started; i++) {
-		pthread_join(workers[i].thread, NULL);
-		probe_sq += workers[i].probe_sq;
-		st->camera += workers[i].stats.camera;
-		st->probe_camera += workers[i].stats.probe_camera;
-		st->probe_pixels += workers[i].stats.probe_pixels;
-		st->shadow += workers[i].stats.shadow;
-		st->area_shadow += workers[i].stats.area_shadow;
-		st->area_settled += workers[i].stats.area_settled;
-		st->reflection += workers[i].stats.reflection;
-		st->refraction += workers[i].stats.refraction;
-		st->nonfinite += workers[i].stats.nonfinite;
-		st->patterns += workers[i].stats.patterns;
-		st->images += workers[i].stats.images;
-		st->bumps += workers[i].stats.bumps;
+	for (int i = 0; i < p->started; i++) {
+		pthread_join(p->workers[i].thread, NULL);
+		trace_stats_add(st, &p->workers[i].stats);
 	}
-	/* which worker rendered which tile varies from run to run, so this sum may differ
-	 * in its last bits: it is reported, never written into the image */
+	if (more)
+		trace_stats_add(st, more);
+	double probe_sq = 0;
+	for (int t = 0; t < p->ntiles; t++)
+		probe_sq += p->tile_probe[t];
 	/* per channel, and the difference of two replicas has twice the variance of one */
 	st->estimated_rmse = st->probe_pixels ? sqrt(probe_sq / (6.0 * (double)st->probe_pixels)) : -1;
-	free(workers);
-	sampler_free(proto);
+	pthread_cond_destroy(&p->fed);
+	pthread_mutex_destroy(&p->lock);
+	free(p->ranges);
+	free(p->workers);
+	free(p->tile_probe);
+	sampler_free(p->proto);
+	free(p);
+}
+
+/* render_image's sink: the tiles go straight into the image. */
+struct image_sink {
+	const struct render_options *opt;
+	struct image *img;
+};
+
+static float *image_pixels(void *ctx, int t, size_t *stride)
+{
+	struct image_sink *s = ctx;
+	int x, y, w, h;
+	render_tile_rect(s->opt, t, &x, &y, &w, &h);
+	*stride = 3 * (size_t)s->img->width;
+	return &s->img->rgb[3 * ((size_t)(y - s->opt->y0) * (size_t)s->img->width + (size_t)(x - s->opt->x0))];
+}
+
+int render_image(const struct scene *sc, const struct render_options *opt, struct image *img, struct ray_stats *st)
+{
+	struct image_sink is = { opt, img };
+	struct render_pool *p = render_pool_start(sc, opt, &(struct render_sink){ image_pixels, NULL, &is });
+	if (!p)
+		return -1;
+	int ntiles = render_tile_count(opt);
+	render_pool_feed(p, 0, ntiles);
+	render_pool_close(p);
+	if (opt->progress) {
+		double t0 = clock_now();
+		while (render_pool_done(p) < ntiles) {
+			render_progress_show(render_pool_done(p), ntiles, clock_now() - t0);
+			nanosleep(&(struct timespec){ 0, 200 * 1000 * 1000 }, NULL);
+		}
+		render_progress_show(ntiles, ntiles, clock_now() - t0);
+		fputc('\n', stderr);
+	}
+	render_pool_finish(p, NULL, st);
 	return 0;
 }

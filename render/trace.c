@@ -392,3 +392,19 @@ struct vec3 trace_ray(const struct scene *sc, const struct ray *r, struct path p
 	}
 	return veil(sc, color, h.t, inside);
 }
+
+void trace_stats_add(struct ray_stats *to, const struct ray_stats *from)
+{
+	to->camera += from->camera;
+	to->probe_camera += from->probe_camera;
+	to->probe_pixels += from->probe_pixels;
+	to->shadow += from->shadow;
+	to->area_shadow += from->area_shadow;
+	to->area_settled += from->area_settled;
+	to->reflection += from->reflection;
+	to->refraction += from->refraction;
+	to->nonfinite += from->nonfinite;
+	to->patterns += from->patterns;
+	to->images += from->images;
+	to->bumps += from->bumps;
+}

@@ -21,6 +21,9 @@ struct ray_stats {
 	double estimated_rmse;         /* of the image (render_image); < 0 for grid and center */
 };
 
+/* Adds from's counts to to's (estimated_rmse stays to's). */
+void trace_stats_add(struct ray_stats *to, const struct ray_stats *from);
+
 /* Where a ray stands in its camera sample's tree of rays: its depth (a camera ray's is
  * 1), the solids it is inside (0 for a camera ray: they start outside every one), and the
  * key of its branch, under which its hits draw their area lights' numbers. */
