@@ -3,6 +3,7 @@
  * by kind with --stats; once, or for each frame of an animation (--frames). */
 #include "config.h"
 
+#include <fcntl.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -15,6 +16,7 @@
 #include "cli.h"
 #include "clock.h"
 #include "diag.h"
+#include "dist.h"
 #include "image_file.h"
 #include "load.h"
 #include "lower.h"
@@ -198,49 +200,136 @@ static int image_fits(const struct render_args *a, const struct scene_desc *s, s
 	return cli_memory_fits(d, *options ? NULL : &s->camera.resolution_span, options, what, image_bytes(w, h));
 }
 
-static void print_stats(const struct load_times *lt, const struct lower_times *wt, double bvh_s, double render_s,
-                        double write_s, const struct scene *sc, const struct ray_stats *st)
+/* What is known of a render once the scene is loaded, lowered and built: the same on
+ * every process of a render over several. */
+struct prepared {
+	struct load_times lt;
+	struct lower_times wt;
+	struct scene sc;
+	struct render_options ro;
+	double bvh_s;
+};
+
+/* --stats to out; write_s < 0: the write time is process 0's to fill in, at
+ * DIST_WRITE_MARK (a frame rendered by another process). */
+static void print_stats(FILE *out, const struct prepared *p, double render_s, double write_s,
+                        const struct ray_stats *st)
 {
-	fprintf(stderr,
-	        "time: parse %.3fs  check %.3fs  evaluate %.3fs  load meshes %.3fs  load images %.3fs  build %s %.3fs"
-	        "  render %.3fs  write %.3fs\n",
-	        lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images, sc->accel.grid ? "grid" : "bvh", bvh_s,
-	        render_s, write_s);
-	fprintf(stderr, "evaluation: %" PRIu64 " steps, %" PRIu64 " calls of functions and macros\n", lt->evaluated.steps,
+	const struct load_times *lt = &p->lt;
+	const struct lower_times *wt = &p->wt;
+	const struct scene *sc = &p->sc;
+	fprintf(out, "time: parse %.3fs  check %.3fs  evaluate %.3fs  load meshes %.3fs  load images %.3fs  build %s %.3fs"
+	        "  render %.3fs  write ", lt->parse, lt->check, lt->eval, wt->load_meshes, wt->load_images,
+	        sc->accel.grid ? "grid" : "bvh", p->bvh_s, render_s);
+	if (write_s < 0)
+		fputs(DIST_WRITE_MARK "s\n", out);
+	else
+		fprintf(out, "%.3fs\n", write_s);
+	fprintf(out, "evaluation: %" PRIu64 " steps, %" PRIu64 " calls of functions and macros\n", lt->evaluated.steps,
 	        lt->evaluated.calls);
-	fprintf(stderr, "scene: %zu spheres, %zu planes, %zu triangles, %zu solids of %zu parts, %zu lights, %zu materials; ",
+	fprintf(out, "scene: %zu spheres, %zu planes, %zu triangles, %zu solids of %zu parts, %zu lights, %zu materials; ",
 	        sc->geo.nspheres, sc->geo.nplanes, sc->geo.ntriangles, sc->geo.nsolids + sc->geo.nunbounded,
 	        sc->geo.nparts, sc->nlights, sc->nmaterials);
 	if (sc->accel.grid) {
 		int cells[3];
 		size_t refs;
 		grid_shape(sc->accel.grid, cells, &refs);
-		fprintf(stderr, "grid %d x %d x %d cells, %zu references\n", cells[0], cells[1], cells[2], refs);
+		fprintf(out, "grid %d x %d x %d cells, %zu references\n", cells[0], cells[1], cells[2], refs);
 	} else {
 		struct bvh_shape shape = bvh_shape(sc->accel.bvh);
-		fprintf(stderr, "bvh %zu nodes, depth %d, %zu triangle packets\n", shape.nodes, shape.depth, shape.packets);
+		fprintf(out, "bvh %zu nodes, depth %d, %zu triangle packets\n", shape.nodes, shape.depth, shape.packets);
 	}
 	if (sc->npatterns || sc->nimage_maps) {
 		/* the image files' texels, each file once */
 		uint64_t bytes = 0;
 		for (size_t i = 0; i < sc->nimages; i++)
 			bytes += image_bytes(sc->images[i]->width, sc->images[i]->height);
-		fprintf(stderr, "textures: %zu patterns, %zu image maps of %zu image files (%.1f MB); lookups: pattern %llu"
+		fprintf(out, "textures: %zu patterns, %zu image maps of %zu image files (%.1f MB); lookups: pattern %llu"
 		        "  image %llu  bump %llu\n", sc->npatterns, sc->nimage_maps, sc->nimages, bytes / 1e6,
 		        (unsigned long long)st->patterns, (unsigned long long)st->images, (unsigned long long)st->bumps);
 	}
-	fprintf(stderr, "rays:  camera %llu  shadow %llu", (unsigned long long)st->camera, (unsigned long long)st->shadow);
+	fprintf(out, "rays:  camera %llu  shadow %llu", (unsigned long long)st->camera, (unsigned long long)st->shadow);
 	if (sc->narea_lights) /* a scene's area-light tests, its dearest rays, apart from the point lights' */
-		fprintf(stderr, "  area shadow %llu (and %llu tests settled without one)", (unsigned long long)st->area_shadow,
+		fprintf(out, "  area shadow %llu (and %llu tests settled without one)", (unsigned long long)st->area_shadow,
 		        (unsigned long long)st->area_settled);
-	fprintf(stderr, "  reflection %llu  refraction %llu  total %llu\n", (unsigned long long)st->reflection,
+	fprintf(out, "  reflection %llu  refraction %llu  total %llu\n", (unsigned long long)st->reflection,
 	        (unsigned long long)st->refraction,
 	        (unsigned long long)(st->camera + st->probe_camera + st->shadow + st->area_shadow + st->reflection +
 	                             st->refraction));
 	if (st->probe_pixels)
-		fprintf(stderr, "error estimate: %llu pixels rendered twice, %llu camera rays\n",
+		fprintf(out, "error estimate: %llu pixels rendered twice, %llu camera rays\n",
 		        (unsigned long long)st->probe_pixels, (unsigned long long)st->probe_camera);
-	fprintf(stderr, "non-finite radiance values: %llu\n", (unsigned long long)st->nonfinite);
+	fprintf(out, "non-finite radiance values: %llu\n", (unsigned long long)st->nonfinite);
+}
+
+/* Loads the scene at moment at, applies the overrides, lowers and builds, with the
+ * diagnostics in d; the image's memory is counted against the machine's only where it
+ * is made (process 0). Returns the exit status. */
+static int prepare(const struct command *self, const struct render_args *a, const struct load_frame *at,
+                   bool makes_image, struct diag *d, struct prepared *p)
+{
+	struct scene_desc desc;
+	*p = (struct prepared){ .ro = { .threads = (int)a->threads } };
+	int rc = (int)load_scene(d, a->scene, at, &desc, &p->lt);
+	struct render_options *ro = &p->ro;
+	if (rc == 0)
+		rc = override(self, a, &desc);
+	if (rc == 0) {
+		ro->x1 = desc.camera.width, ro->y1 = desc.camera.height;
+		if (a->region)
+			ro->x0 = (int)a->x0, ro->y0 = (int)a->y0, ro->x1 = (int)a->x1, ro->y1 = (int)a->y1;
+		if (makes_image)
+			rc = image_fits(a, &desc, d, ro->x1 - ro->x0, ro->y1 - ro->y0);
+	}
+	int64_t image = makes_image ? (int64_t)image_bytes(ro->x1 - ro->x0, ro->y1 - ro->y0) : 0;
+	if (rc == 0)
+		rc = (int)lower_scene(d, &desc, &p->sc, &p->wt, image);
+	scene_desc_free(&desc); /* lowered: its memory goes to the BVH */
+	if (rc == 0) {
+		double t0 = clock_now();
+		accel_build(&p->sc.accel, &p->sc.geo, a->accel);
+		p->bvh_s = clock_now() - t0;
+	}
+	return rc;
+}
+
+/* A new image of p's rectangle, or NULL after a message. */
+static struct image *new_image(const struct prepared *p)
+{
+	const struct render_options *ro = &p->ro;
+	struct image *img = image_new(ro->x1 - ro->x0, ro->y1 - ro->y0);
+	if (!img)
+		fprintf(stderr, "scn: cannot allocate a %d x %d image\n", ro->x1 - ro->x0, ro->y1 - ro->y0);
+	return img;
+}
+
+/* " (frame 3, clock 0.25)", or "" for a still without --clock. */
+static const char *moment_note(const char *moment, char *buf, size_t size)
+{
+	if (!moment)
+		return "";
+	snprintf(buf, size, " (%s)", moment);
+	return buf;
+}
+
+static void warn_nonfinite(FILE *out, const struct ray_stats *st, const char *moment)
+{
+	char note[128];
+	if (st->nonfinite)
+		fprintf(out, "scn: warning: %llu radiance values were not finite and were left out of the image%s\n",
+		        (unsigned long long)st->nonfinite, moment_note(moment, note, sizeof note));
+}
+
+static void report_written(const char *out, const char *moment, const struct image *img, int samples,
+                           double render_s, double rmse)
+{
+	char note[128];
+	fprintf(stderr, "scn: wrote %s%s: %d x %d, %d sample%s per pixel, rendered in %.2f s", out,
+	        moment_note(moment, note, sizeof note), img->width, img->height, samples, samples == 1 ? "" : "s",
+	        render_s);
+	if (rmse >= 0)
+		fprintf(stderr, "; estimated RMSE %.3g", rmse);
+	fputc('\n', stderr);
 }
 
 /* One render and its image file: the whole of a still, or one frame of --frames. */
@@ -253,75 +342,70 @@ struct shot {
 	struct anim_bar *bar;              /* the bar over frames, shown while this one renders, or NULL */
 };
 
-/* Renders s: creates its file, loads the scene at its moment, applies the overrides,
- * lowers, renders and writes. Returns the exit status, after the messages. */
-static int render_shot(const struct command *self, const struct render_args *a, const struct shot *s)
+/* Renders s on every process of w: process 0 creates the file, loads the scene at its
+ * moment, applies the overrides, lowers, renders its share and writes; the others load,
+ * lower and render their shares, saying nothing unless they alone fail. Returns the exit
+ * status, after the messages. */
+static int render_shot(const struct command *self, const struct render_args *a, const struct shot *s,
+                       const struct dist_world *w)
 {
+	bool writer = w->rank == 0;
 	/* the output file exists from the start, so that an unwritable place is found
 	 * before the render and not after it */
 	char err[512];
 	struct image_write_options wo = { .bit_depth = (int)a->bit_depth, .float32 = a->float32 };
 	struct image_file file;
-	if (image_file_create(&file, s->out, &wo, err, sizeof err) != 0) {
+	int rc = writer ? image_file_create(&file, s->out, &wo, err, sizeof err) : 0;
+	if (rc != 0)
 		fprintf(stderr, "scn: %s\n", err);
+	if (rc != 0 && w->size == 1)
 		return EXIT_IO;
-	}
-	bool file_open = true;
+	rc = rc ? EXIT_IO : 0;
+	bool file_open = writer && rc == 0;
 
+	/* the other processes' messages are kept, for process 0 to print if they alone fail */
+	char *kept = NULL;
+	size_t kept_size = 0;
+	FILE *to = writer ? stderr : open_memstream(&kept, &kept_size);
 	struct diag d;
-	diag_init(&d, stderr);
+	diag_init(&d, to ? to : stderr);
 	struct diag_mark start = diag_mark(&d);
-	struct scene_desc desc;
-	struct load_times lt;
-	struct lower_times wt = { 0 };
-	struct scene sc = { 0 };
+	struct prepared p;
 	struct image *img = NULL;
-	struct render_options ro = { .threads = (int)a->threads, .progress = s->tile_progress };
-	int rc = (int)load_scene(&d, a->scene, &s->at, &desc, &lt);
 	if (rc == 0)
-		rc = override(self, a, &desc);
-	if (rc == 0) {
-		ro.x1 = desc.camera.width, ro.y1 = desc.camera.height;
-		if (a->region)
-			ro.x0 = (int)a->x0, ro.y0 = (int)a->y0, ro.x1 = (int)a->x1, ro.y1 = (int)a->y1;
-		rc = image_fits(a, &desc, &d, ro.x1 - ro.x0, ro.y1 - ro.y0);
-	}
-	if (rc == 0)
-		rc = (int)lower_scene(&d, &desc, &sc, &wt, (int64_t)image_bytes(ro.x1 - ro.x0, ro.y1 - ro.y0));
-	scene_desc_free(&desc); /* lowered: its memory goes to the BVH */
+		rc = prepare(self, a, &s->at, writer, &d, &p);
+	else
+		p = (struct prepared){ 0 };
 	/* nothing is printed before the flush, so the warnings can still go */
-	if (s->drop_warnings && d.errors == 0)
+	if ((s->drop_warnings || !writer) && d.errors == 0)
 		diag_rewind(&d, start);
 	diag_flush(&d);
+	if (rc == 0 && writer && !(img = new_image(&p)))
+		rc = EXIT_RENDER;
+	if (!writer && to)
+		fclose(to);
+	rc = dist_agree(w, rc, kept);
+	free(kept);
 	if (rc)
 		goto done;
-	double t0 = clock_now();
-	accel_build(&sc.accel, &sc.geo, a->accel);
-	double bvh_s = clock_now() - t0;
 
-	img = image_new(ro.x1 - ro.x0, ro.y1 - ro.y0);
-	if (!img) {
-		fprintf(stderr, "scn: cannot allocate a %d x %d image\n", ro.x1 - ro.x0, ro.y1 - ro.y0);
-		rc = EXIT_RENDER;
-		goto done;
-	}
 	struct ray_stats st;
-	if (s->bar)
+	p.ro.progress = s->tile_progress && writer;
+	if (s->bar && writer)
 		anim_bar_show(s->bar);
-	t0 = clock_now();
-	int started = render_image(&sc, &ro, img, &st);
+	double t0 = clock_now();
+	int started = dist_render_image(w, &p.sc, &p.ro, img, &st);
 	double render_s = clock_now() - t0;
-	if (s->bar)
+	if (s->bar && writer)
 		anim_bar_erase(s->bar);
 	if (started != 0) {
 		fprintf(stderr, "scn: cannot start the render threads\n");
 		rc = EXIT_RENDER;
 		goto done;
 	}
-	if (st.nonfinite)
-		fprintf(stderr, "scn: warning: %llu radiance values were not finite and were left out of the image%s%s%s\n",
-		        (unsigned long long)st.nonfinite, s->moment ? " (" : "", s->moment ? s->moment : "",
-		        s->moment ? ")" : "");
+	if (!writer)
+		goto done;
+	warn_nonfinite(stderr, &st, s->moment);
 	t0 = clock_now();
 	file_open = false;
 	int e = image_file_commit(&file, img, err, sizeof err);
@@ -331,20 +415,14 @@ static int render_shot(const struct command *self, const struct render_args *a, 
 		goto done;
 	}
 	if (a->stats)
-		print_stats(&lt, &wt, bvh_s, render_s, clock_now() - t0, &sc, &st);
-	if (!a->quiet) {
-		fprintf(stderr, "scn: wrote %s%s%s%s: %d x %d, %d sample%s per pixel, rendered in %.2f s", s->out,
-		        s->moment ? " (" : "", s->moment ? s->moment : "", s->moment ? ")" : "", img->width, img->height,
-		        sc.sampling.count, sc.sampling.count == 1 ? "" : "s", render_s);
-		if (st.estimated_rmse >= 0)
-			fprintf(stderr, "; estimated RMSE %.3g", st.estimated_rmse);
-		fputc('\n', stderr);
-	}
+		print_stats(stderr, &p, render_s, clock_now() - t0, &st);
+	if (!a->quiet)
+		report_written(s->out, s->moment, img, p.sc.sampling.count, render_s, st.estimated_rmse);
 done:
 	if (file_open)
 		image_file_commit(&file, NULL, err, sizeof err);
 	image_free(img);
-	scene_free(&sc);
+	scene_free(&p.sc);
 	diag_fini(&d);
 	return rc;
 }
@@ -356,72 +434,265 @@ static int known_format(const struct command *self, const char *out)
 	return 0;
 }
 
-/* After the messages of frame k, which failed: which frame it was, and what is written. */
-static void frame_failed(const struct anim_frames *f, long k, const char *clock)
+/* After the messages of frame k, which failed: which frame it was, and what is written:
+ * the frames before it, or, from several processes, others too. */
+static void frame_failed(const struct anim_frames *f, long k, long written)
 {
-	char written[96];
-	long done = k - f->first;
-	if (done == 0)
-		snprintf(written, sizeof written, "no frame was written");
-	else if (done == 1)
-		snprintf(written, sizeof written, "frame %ld was written", f->first);
+	char clock[32], what[96];
+	anim_clock_text(anim_clock(f, k), clock, sizeof clock);
+	if (written == 0)
+		snprintf(what, sizeof what, "no frame was written");
+	else if (written != k - f->first)
+		snprintf(what, sizeof what, "%ld other frame%s written", written, written == 1 ? " was" : "s were");
+	else if (written == 1)
+		snprintf(what, sizeof what, "frame %ld was written", f->first);
 	else
-		snprintf(written, sizeof written, "frames %ld %s %ld were written", f->first, done == 2 ? "and" : "to", k - 1);
-	fprintf(stderr, "scn: error: frame %ld (clock %s) failed; %s\n", k, clock, written);
+		snprintf(what, sizeof what, "frames %ld %s %ld were written", f->first, written == 2 ? "and" : "to", k - 1);
+	fprintf(stderr, "scn: error: frame %ld (clock %s) failed; %s\n", k, clock, what);
 }
 
-/* --frames: each frame a whole render, in order, until one fails. */
-static int render_frames(const struct command *self, const struct render_args *a, bool progress)
+/* "frame 3, clock 0.25": how the messages name frame k. */
+static void frame_moment(const struct anim_frames *f, long k, char *buf, size_t size)
 {
-	const struct anim_frames *f = &a->frames;
+	char clock[32];
+	anim_clock_text(anim_clock(f, k), clock, sizeof clock);
+	snprintf(buf, size, "frame %ld, clock %s", k, clock);
+}
+
+/* The frames' output names, checked: 0, or the exit status after a message. */
+static int frame_names(const struct command *self, const struct render_args *a, struct anim_names *names)
+{
 	char *fallback = a->out ? NULL : cli_default_output(a->scene, ".png");
-	struct anim_names names;
-	int rc = anim_names_init(&names, self, a->out ? a->out : fallback, a->out != NULL, f);
+	int rc = anim_names_init(names, self, a->out ? a->out : fallback, a->out != NULL, &a->frames);
 	free(fallback);
 	if (rc)
 		return rc;
-	char *name = anim_name(&names, f->first); /* every frame's extension is the first's */
+	char *name = anim_name(names, a->frames.first); /* every frame's extension is the first's */
 	rc = known_format(self, name);
 	free(name);
+	if (rc)
+		anim_names_free(names);
+	return rc;
+}
+
+/* --frames on one process, or on fewer than the frames: each frame a whole render, in
+ * order, until one fails. */
+static int render_frames(const struct command *self, const struct render_args *a, bool progress,
+                         const struct dist_world *w)
+{
+	const struct anim_frames *f = &a->frames;
+	struct anim_names names;
+	int rc = frame_names(self, a, &names);
+	if (rc)
+		return rc;
 	struct anim_bar bar;
 	anim_bar_init(&bar, f->end - f->first);
 	for (long k = f->first; rc == 0 && k < f->end; k++) {
-		char clock[32], moment[96];
-		struct load_frame at = { anim_clock(f, k), k };
-		anim_clock_text(at.clock, clock, sizeof clock);
-		snprintf(moment, sizeof moment, "frame %ld, clock %s", k, clock);
-		name = anim_name(&names, k);
-		struct shot s = { .out = name, .at = at, .moment = moment, .drop_warnings = k > f->first,
-		                  .bar = progress ? &bar : NULL };
-		rc = render_shot(self, a, &s);
+		char moment[96];
+		frame_moment(f, k, moment, sizeof moment);
+		char *name = anim_name(&names, k);
+		struct shot s = { .out = name, .at = { anim_clock(f, k), k }, .moment = moment,
+		                  .drop_warnings = k > f->first, .bar = progress ? &bar : NULL };
+		rc = render_shot(self, a, &s, w);
 		free(name);
-		if (rc)
-			frame_failed(f, k, clock);
+		if (rc && w->rank == 0)
+			frame_failed(f, k, k - f->first);
 		bar.done++;
 	}
 	anim_names_free(&names);
 	return rc;
 }
 
-int cmd_render(const struct command *self, int argc, char **argv)
+/* --frames over at least as many frames as processes: whole frames per process. */
+struct spread {
+	const struct command *self;
+	const struct render_args *a;
+	struct anim_names names;
+	struct anim_bar *bar;              /* on process 0 with --progress, or NULL */
+};
+
+/* Renders frame k into *out, its messages kept for process 0 to print. */
+static int spread_render(void *ctx, long k, struct dist_frame *out)
 {
-	struct render_args a;
-	int rc = parse_args(self, argc, argv, &a);
+	struct spread *sp = ctx;
+	const struct render_args *a = sp->a;
+	*out = (struct dist_frame){ .k = k, .rmse = -1 };
+	size_t size;
+	FILE *to = open_memstream(&out->messages, &size);
+	struct diag d;
+	diag_init(&d, to ? to : stderr);
+	struct diag_mark start = diag_mark(&d);
+	struct prepared p;
+	struct load_frame at = { anim_clock(&a->frames, k), k };
+	int rc = prepare(sp->self, a, &at, true, &d, &p);
+	if (k > a->frames.first && d.errors == 0)
+		diag_rewind(&d, start);
+	diag_flush(&d);
+	if (rc == 0 && !(out->img = new_image(&p)))
+		rc = EXIT_RENDER;
+	if (rc == 0) {
+		struct ray_stats st;
+		double t0 = clock_now();
+		if (render_image(&p.sc, &p.ro, out->img, &st) != 0) {
+			fprintf(to ? to : stderr, "scn: cannot start the render threads\n");
+			rc = EXIT_RENDER;
+		}
+		out->render_s = clock_now() - t0;
+		out->rmse = st.estimated_rmse;
+		out->samples = p.sc.sampling.count;
+		char moment[96];
+		frame_moment(&a->frames, k, moment, sizeof moment);
+		warn_nonfinite(to ? to : stderr, &st, moment);
+		size_t stats_size;
+		FILE *stats = a->stats ? open_memstream(&out->stats, &stats_size) : NULL;
+		if (stats) {
+			print_stats(stats, &p, out->render_s, -1, &st);
+			fclose(stats);
+		}
+	}
+	if (to)
+		fclose(to);
+	if (rc) {
+		image_free(out->img);
+		out->img = NULL;
+	}
+	out->status = rc;
+	scene_free(&p.sc);
+	diag_fini(&d);
+	return rc;
+}
+
+/* On process 0: prints frame f's messages, writes it, and reports. */
+static int spread_deliver(void *ctx, struct dist_frame *f)
+{
+	struct spread *sp = ctx;
+	const struct render_args *a = sp->a;
+	if (sp->bar)
+		anim_bar_erase(sp->bar);
+	if (f->messages)
+		fputs(f->messages, stderr);
+	int rc = f->status;
+	if (rc == 0) {
+		char err[512], moment[96];
+		char *name = anim_name(&sp->names, f->k);
+		struct image_write_options wo = { .bit_depth = (int)a->bit_depth, .float32 = a->float32 };
+		struct image_file file;
+		double t0 = clock_now();
+		int e = image_file_create(&file, name, &wo, err, sizeof err);
+		if (e == 0)
+			e = image_file_commit(&file, f->img, err, sizeof err);
+		if (e) {
+			fprintf(stderr, "scn: %s\n", err);
+			rc = cli_file_status(e);
+		}
+		if (rc == 0 && f->stats) {
+			char *mark = strstr(f->stats, DIST_WRITE_MARK);
+			if (mark)
+				fprintf(stderr, "%.*s%.3f%s", (int)(mark - f->stats), f->stats, clock_now() - t0, mark + 1);
+		}
+		frame_moment(&a->frames, f->k, moment, sizeof moment);
+		if (rc == 0 && !a->quiet)
+			report_written(name, moment, f->img, f->samples, f->render_s, f->rmse);
+		free(name);
+	}
+	if (sp->bar) {
+		sp->bar->done++;
+		anim_bar_show(sp->bar);
+	}
+	return rc;
+}
+
+static int render_frames_spread(const struct command *self, const struct render_args *a, bool progress,
+                                const struct dist_world *w)
+{
+	struct spread sp = { .self = self, .a = a };
+	int rc = frame_names(self, a, &sp.names);
 	if (rc)
-		return rc < 0 ? 0 : rc;
-	bool progress = !a.quiet && (a.progress >= 0 ? a.progress : isatty(2));
-	if (a.animate)
-		return render_frames(self, &a, progress);
-	char *out = a.out ? xstrdup(a.out) : cli_default_output(a.scene, ".png");
-	rc = known_format(self, out);
+		return rc;
+	struct anim_bar bar;
+	anim_bar_init(&bar, a->frames.end - a->frames.first);
+	sp.bar = progress && w->rank == 0 ? &bar : NULL;
+	if (sp.bar)
+		anim_bar_show(sp.bar);
+	long failed, written;
+	rc = dist_render_frames(w, &(struct dist_frames){ a->frames.first, a->frames.end, spread_render,
+	                                                  spread_deliver, &sp }, &failed, &written);
+	if (sp.bar)
+		anim_bar_erase(sp.bar);
+	if (failed >= 0)
+		frame_failed(&a->frames, failed, written);
+	anim_names_free(&sp.names);
+	return rc;
+}
+
+/* Runs the render that the arguments ask for on every process of w. */
+static int render_run(const struct command *self, const struct render_args *a, const struct dist_world *w)
+{
+	bool progress = !a->quiet && (a->progress >= 0 ? a->progress : isatty(2));
+	if (a->animate && w->size > 1 && a->frames.end - a->frames.first >= w->size)
+		return render_frames_spread(self, a, progress, w);
+	if (a->animate)
+		return render_frames(self, a, progress, w);
+	char *out = a->out ? xstrdup(a->out) : cli_default_output(a->scene, ".png");
+	int rc = known_format(self, out);
 	if (rc == 0) {
 		char clock[32], moment[48];
-		anim_clock_text(a.clock, clock, sizeof clock);
+		anim_clock_text(a->clock, clock, sizeof clock);
 		snprintf(moment, sizeof moment, "clock %s", clock);
-		struct shot s = { .out = out, .at = { a.clock, 0 }, .moment = a.clock_given ? moment : NULL,
+		struct shot s = { .out = out, .at = { a->clock, 0 }, .moment = a->clock_given ? moment : NULL,
 		                  .tile_progress = progress };
-		rc = render_shot(self, &a, &s);
+		rc = render_shot(self, a, &s, w);
 	}
 	free(out);
 	return rc;
+}
+
+/* parse_args, with standard output and error thrown away when quiet: the command line
+ * is read on every process, and process 0 alone says what is wrong with it. */
+static int parse_quietly(bool quiet, const struct command *self, int argc, char **argv, struct render_args *a)
+{
+	int saved[2] = { -1, -1 };
+	int null = quiet ? open("/dev/null", O_WRONLY) : -1;
+	if (null >= 0) {
+		fflush(stdout);
+		fflush(stderr);
+		for (int fd = 1; fd <= 2; fd++) {
+			saved[fd - 1] = dup(fd);
+			dup2(null, fd);
+		}
+		close(null);
+	}
+	int rc = parse_args(self, argc, argv, a);
+	if (null >= 0) {
+		fflush(stdout);
+		fflush(stderr);
+		for (int fd = 1; fd <= 2; fd++)
+			if (saved[fd - 1] >= 0) {
+				dup2(saved[fd - 1], fd);
+				close(saved[fd - 1]);
+			}
+	}
+	return rc;
+}
+
+int cmd_render(const struct command *self, int argc, char **argv)
+{
+	/* under an MPI launcher, scn becomes scn-mpi here, with scn render's arguments */
+	char **all = xmalloc(((size_t)argc + 2) * sizeof *all);
+	all[0] = "scn-mpi";
+	memcpy(all + 1, argv, (size_t)argc * sizeof *argv);
+	all[argc + 1] = NULL;
+	struct dist_world w;
+	int rc = dist_start(argc + 1, all, &w);
+	free(all);
+	if (rc)
+		return rc;
+	struct render_args a;
+	rc = parse_quietly(w.rank != 0, self, argc, argv, &a);
+	if (rc == 0)
+		rc = render_run(self, &a, &w);
+	dist_end(&w);
+	/* process 0 has said what failed, and its status is the run's: another process that
+	 * ended with one first would have the launcher stop process 0 before it could */
+	return rc < 0 || w.rank != 0 ? 0 : rc;
 }

@@ -95,12 +95,22 @@ bool cleanup_handles_crashes(void)
 #endif
 }
 
+/* cleanup_name_process's words, "process 2 of 4 (on node7): " */
+static char process_name[128];
+
+void cleanup_name_process(const char *name)
+{
+	snprintf(process_name, sizeof process_name, "%s", name);
+}
+
 static void on_signal(int sig)
 {
 	remove_all();
-	static const char prefix[] = "scn: stopped by ";
+	static const char prefix[] = "scn: ", stopped[] = "stopped by ";
 	const char *name = sig == SIGINT ? "SIGINT\n" : sig == SIGTERM ? "SIGTERM\n" : "SIGHUP\n";
 	ssize_t ignored = write(2, prefix, sizeof prefix - 1);
+	ignored = write(2, process_name, strlen(process_name));
+	ignored = write(2, stopped, sizeof stopped - 1);
 	ignored = write(2, name, strlen(name));
 	(void)ignored;
 	/* the default action, once the handler returns and the signal is unblocked: the

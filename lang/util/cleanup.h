@@ -20,6 +20,9 @@
  * a stack of its own in the calling thread, so that a stack overflow there is reported
  * too); not in a build with AddressSanitizer, which reports crashes itself. */
 void cleanup_install_signals(void);
+/* Words that name this process in the "stopped by" line, such as "process 2 of 4 (on
+ * node7): ", for a run of several processes; copied. */
+void cleanup_name_process(const char *name);
 /* Whether cleanup_install_signals handles crashes: not with AddressSanitizer. */
 bool cleanup_handles_crashes(void);
 

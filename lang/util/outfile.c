@@ -1,7 +1,9 @@
 /* outfile.c: the temporary-file-and-rename protocol shared by the image and POV-Ray
  * writers: an interrupted or failed write never leaves a truncated file or destroys the
- * one that was there. A signal or running out of memory meanwhile removes the temporary
- * file too (cleanup.h). */
+ * one that was there. Where the file system can, the temporary file has no name until
+ * it is complete (Linux's O_TMPFILE), so that not even SIGKILL leaves it behind;
+ * elsewhere it is named, and a signal or running out of memory removes it (cleanup.h). */
+#define _GNU_SOURCE /* O_TMPFILE */
 #include "outfile.h"
 
 #include <errno.h>
@@ -34,6 +36,14 @@ int outfile_open(const char *path, char **tmp, char *err, size_t errlen)
 	size_t size = (size_t)dirlen + 64;
 	*tmp = xmalloc(size);
 	int e = EEXIST;
+#ifdef O_TMPFILE
+	/* unnamed until outfile_finish links it (through /proc, which must be there) */
+	snprintf(*tmp, size, "%.*s", dirlen ? dirlen : 1, dirlen ? path : ".");
+	int unnamed = access("/proc/self/fd", X_OK) == 0 ? open(*tmp, O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666) : -1;
+	snprintf(*tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
+	if (unnamed >= 0)
+		return unnamed;
+#endif
 	for (int attempt = 0; attempt < 100; attempt++) {
 		snprintf(*tmp, size, "%.*s.scn-%ld-%u.tmp", dirlen, path, (long)getpid(), counter++);
 		/* registered before it exists, so that no signal finds it made and not known */
@@ -59,6 +69,15 @@ int outfile_finish(int fd, char *tmp, const char *path, int rc, char *err, size_
 	 * is checked too, since some file systems report write errors only there. */
 	if (rc == 0 && fsync(fd) != 0 && errno != EINVAL)
 		rc = errno;
+	/* an unnamed file gets tmp's name only now, for as long as the rename takes */
+	struct stat st;
+	if (rc == 0 && fstat(fd, &st) == 0 && st.st_nlink == 0) {
+		char self[64];
+		snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+		cleanup_register(tmp, false);
+		if (linkat(AT_FDCWD, self, AT_FDCWD, tmp, AT_SYMLINK_FOLLOW) != 0)
+			rc = errno;
+	}
 	if (close(fd) != 0 && rc == 0)
 		rc = errno;
 	if (rc == 0 && rename(tmp, path) != 0)

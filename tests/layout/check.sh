@@ -17,7 +17,7 @@ set -u
 top=${SCN_SRCDIR:-$(cd "$(dirname "$0")/../.." && pwd)}
 build=$(pwd)
 verbose=${1:-}
-ALLOWED_UP="render/pov>render"
+ALLOWED_UP="render/pov>render render/dist>render"
 tmp=${TMPDIR:-/tmp}/scn-layout.$$
 mkdir -p "$tmp" || exit 99
 trap 'rm -rf "$tmp"' EXIT
