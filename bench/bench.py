@@ -14,6 +14,7 @@ import math
 import os
 import re
 import shlex
+import shutil
 import statistics
 import subprocess
 import sys
@@ -668,15 +669,65 @@ def converge(work, only=None):
                                                                   p.stdout.strip().splitlines()[-1]))
 
 
+# ---- Over processes (MPI) ----
+
+DIST_PROCESSES = 2  # this machine's cores: 2 processes x 1 thread against 1 process x 2 threads
+STATS_TRAFFIC = re.compile(r"^processes: (\d+); (\d+) of (\d+) tiles from the others in (\d+) messages, (\d+) bytes "
+                           r"\((\d+) a tile\); gathering them took ([0-9.]+)s$", re.M)
+
+
+def mpirun(np, cmd):
+    env = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1".split() if os.getuid() == 0 else []
+    return ["env"] + env + ["mpirun", "--oversubscribe", "--mca", "btl", "self,vader", "-np", str(np)] + cmd
+
+
+def distributed(work, runs):
+    """The headline (1280x1024, 4 spp) on one process of 2 threads and on 2 processes of 1
+    thread, in turn, run after run; and a 1-pixel render with and without mpirun."""
+    scene = os.path.join(work, "headline.scn")
+    scenes.headline(scene)
+    out = os.path.join(work, "dist.png")
+    base = [SCN, "render", scene, "-o", out, "-s", "4", "--stats", "--no-progress"]
+    one, many, traffic = [], [], None
+    for r in range(runs):
+        log("bench: processes: run %d" % (r + 1))
+        one.append(timed(base + ["-j", str(DIST_PROCESSES)]))
+        many.append(timed(mpirun(DIST_PROCESSES, base + ["-j", "1"])))
+        traffic = STATS_TRAFFIC.search(many[-1][2])
+    tiny = os.path.join(work, "tiny.scn")
+    with open(tiny, "w") as f:
+        f.write("camera { location <0, 0, -5>  look_at <0, 0, 0>  resolution 1, 1 }\nsphere { <0, 0, 0>, 1 }\n")
+    start_plain = [timed([SCN, "render", tiny, "-o", out, "-q"])[0] for _ in range(max(runs, 5))]
+    start_mpi = [timed(mpirun(DIST_PROCESSES, [SCN, "render", tiny, "-o", out, "-q"]))[0] for _ in range(max(runs, 5))]
+    return one, many, traffic, start_plain, start_mpi
+
+
+def print_distributed(one, many, traffic, start_plain, start_mpi, runs):
+    med = lambda xs, f: statistics.median(f(x) for x in xs)
+    render = lambda t: scn_stats(t[2])["render"]
+    r1, rn = med(one, render), med(many, render)
+    w1, wn = med(one, lambda t: t[0]), med(many, lambda t: t[0])
+    print("over processes: the headline, 1280x1024, 4 spp, 1000 spheres; median of %d runs, taken in turn" % runs)
+    print("  1 process x %d threads:  render %.3f s, wall %.3f s" % (DIST_PROCESSES, r1, w1))
+    print("  %d processes x 1 thread: render %.3f s, wall %.3f s (mpirun)" % (DIST_PROCESSES, rn, wn))
+    print("  MPI overhead: render %+.1f%%, wall %+.1f%%" % (100 * (rn / r1 - 1), 100 * (wn / w1 - 1)))
+    if traffic:
+        n, tiles, total, msgs, nbytes, per, gather = traffic.groups()
+        print("  to process 0: %s of %s tiles in %s messages, %s bytes (%s a tile); gathering them took %s s "
+              "(%.1f us a message)" % (tiles, total, msgs, nbytes, per, gather, 1e6 * float(gather) / max(1, int(msgs))))
+    print("  start-up, a 1-pixel render: plain %.3f s, under mpirun -np %d %.3f s (medians of %d)"
+          % (statistics.median(start_plain), DIST_PROCESSES, statistics.median(start_mpi), len(start_plain)))
+
+
 def main():
     ap = argparse.ArgumentParser(prog="bench/run", description="scn's benchmarks")
     ap.add_argument("--quick", action="store_true", help="one run of each, not three")
     ap.add_argument("--runs", type=int, help="runs of each measurement (default 3, --quick 1)")
     ap.add_argument("--full", action="store_true", help="also scn converge examples/whitted.scn (5 minutes)")
-    ap.add_argument("--only", choices=["table", "language", "textures", "converge", "scaling", "embree"],
+    ap.add_argument("--only", choices=["table", "language", "textures", "converge", "scaling", "embree", "processes"],
                     action="append",
-                    help="run only these parts (repeatable); default: table, language, textures, scaling and "
-                         "embree, and converge with --full")
+                    help="run only these parts (repeatable); default: table, language, textures, scaling, "
+                         "embree and processes (MPI, where mpirun and scn-mpi are), and converge with --full")
     ap.add_argument("--scene", action="append", metavar="NAME",
                     help="the table's scenes to run, by the name in its first column (repeatable: "
                          "--scene 'quadrics 1e4' --scene 'csg wall'), and converge's ('whitted', 'soft shadows'); "
@@ -686,9 +737,9 @@ def main():
     ap.add_argument("--svg", default=os.path.join(HERE, "scaling.svg"), help="the scaling plot's file")
     a = ap.parse_args()
     runs = a.runs or (1 if a.quick else 3)
-    parts = a.only or ["table", "language", "textures", "scaling", "embree"] + (["converge"] if a.full else [])
+    parts = a.only or ["table", "language", "textures", "scaling", "embree", "processes"] + (["converge"] if a.full else [])
     os.makedirs(a.work, exist_ok=True)
-    subprocess.run(["make", "-s", "-C", TOP, "scn"], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["make", "-s", "-C", TOP, "all"], check=True, stdout=subprocess.DEVNULL)
     with open("/proc/loadavg") as f:
         print("load average at the start: " + " ".join(f.read().split()[:3]) + "; %d cores" % os.cpu_count())
     t0 = time.time()
@@ -716,6 +767,14 @@ def main():
         sys.stdout.flush()
     if "embree" in parts:
         embree(a.work)
+        print()
+        sys.stdout.flush()
+    if "processes" in parts:
+        if shutil.which("mpirun") and os.path.exists(os.path.join(TOP, "scn-mpi")):
+            print_distributed(*distributed(a.work, runs), runs)
+        else:
+            print("over processes: skipped, no mpirun or no scn-mpi (apt-get install openmpi-bin libopenmpi-dev, "
+                  "then configure and make)")
         print()
         sys.stdout.flush()
     if "scaling" in parts:

@@ -274,15 +274,15 @@ void render_pool_feed(struct render_pool *p, int first, int count)
 	if (count <= 0)
 		return;
 	pthread_mutex_lock(&p->lock);
-	if (p->nranges == p->cap) {
+	if (p->nranges == p->cap && p->head > 0) {
 		/* the ranges taken make room first */
 		memmove(p->ranges, p->ranges + p->head, (p->nranges - p->head) * sizeof *p->ranges);
 		p->nranges -= p->head;
 		p->head = 0;
-		if (p->nranges == p->cap) {
-			p->cap = p->cap ? 2 * p->cap : 8;
-			p->ranges = xrealloc(p->ranges, p->cap * sizeof *p->ranges);
-		}
+	}
+	if (p->nranges == p->cap) {
+		p->cap = p->cap ? 2 * p->cap : 8;
+		p->ranges = xrealloc(p->ranges, p->cap * sizeof *p->ranges);
 	}
 	p->ranges[p->nranges++] = (struct feed_range){ first, count };
 	pthread_cond_broadcast(&p->fed);

@@ -211,9 +211,10 @@ struct prepared {
 };
 
 /* --stats to out; write_s < 0: the write time is process 0's to fill in, at
- * DIST_WRITE_MARK (a frame rendered by another process). */
+ * DIST_WRITE_MARK (a frame rendered by another process). traffic: what other processes
+ * sent of this image, or NULL. */
 static void print_stats(FILE *out, const struct prepared *p, double render_s, double write_s,
-                        const struct ray_stats *st)
+                        const struct ray_stats *st, const struct dist_world *w, const struct dist_traffic *traffic)
 {
 	const struct load_times *lt = &p->lt;
 	const struct lower_times *wt = &p->wt;
@@ -260,6 +261,10 @@ static void print_stats(FILE *out, const struct prepared *p, double render_s, do
 		fprintf(out, "error estimate: %llu pixels rendered twice, %llu camera rays\n",
 		        (unsigned long long)st->probe_pixels, (unsigned long long)st->probe_camera);
 	fprintf(out, "non-finite radiance values: %llu\n", (unsigned long long)st->nonfinite);
+	if (traffic && w->size > 1)
+		fprintf(out, "processes: %d; %ld of %d tiles from the others in %ld messages, %.0f bytes (%.0f a tile);"
+		        " gathering them took %.3fs\n", w->size, traffic->tiles, render_tile_count(&p->ro), traffic->messages,
+		        traffic->bytes, traffic->tiles ? traffic->bytes / (double)traffic->tiles : 0.0, traffic->gather_s);
 }
 
 /* Loads the scene at moment at, applies the overrides, lowers and builds, with the
@@ -379,22 +384,23 @@ static int render_shot(const struct command *self, const struct render_args *a, 
 	/* nothing is printed before the flush, so the warnings can still go */
 	if ((s->drop_warnings || !writer) && d.errors == 0)
 		diag_rewind(&d, start);
-	diag_flush(&d);
-	if (rc == 0 && writer && !(img = new_image(&p)))
-		rc = EXIT_RENDER;
+	diag_fini(&d); /* it prints what is left, and the stream is closed after */
 	if (!writer && to)
 		fclose(to);
+	if (rc == 0 && writer && !(img = new_image(&p)))
+		rc = EXIT_RENDER;
 	rc = dist_agree(w, rc, kept);
 	free(kept);
 	if (rc)
 		goto done;
 
 	struct ray_stats st;
+	struct dist_traffic traffic;
 	p.ro.progress = s->tile_progress && writer;
 	if (s->bar && writer)
 		anim_bar_show(s->bar);
 	double t0 = clock_now();
-	int started = dist_render_image(w, &p.sc, &p.ro, img, &st);
+	int started = dist_render_image(w, &p.sc, &p.ro, img, &st, &traffic);
 	double render_s = clock_now() - t0;
 	if (s->bar && writer)
 		anim_bar_erase(s->bar);
@@ -415,7 +421,7 @@ static int render_shot(const struct command *self, const struct render_args *a, 
 		goto done;
 	}
 	if (a->stats)
-		print_stats(stderr, &p, render_s, clock_now() - t0, &st);
+		print_stats(stderr, &p, render_s, clock_now() - t0, &st, w, &traffic);
 	if (!a->quiet)
 		report_written(s->out, s->moment, img, p.sc.sampling.count, render_s, st.estimated_rmse);
 done:
@@ -423,7 +429,6 @@ done:
 		image_file_commit(&file, NULL, err, sizeof err);
 	image_free(img);
 	scene_free(&p.sc);
-	diag_fini(&d);
 	return rc;
 }
 
@@ -527,7 +532,7 @@ static int spread_render(void *ctx, long k, struct dist_frame *out)
 	int rc = prepare(sp->self, a, &at, true, &d, &p);
 	if (k > a->frames.first && d.errors == 0)
 		diag_rewind(&d, start);
-	diag_flush(&d);
+	diag_fini(&d); /* it prints what is left, and the stream is closed after */
 	if (rc == 0 && !(out->img = new_image(&p)))
 		rc = EXIT_RENDER;
 	if (rc == 0) {
@@ -546,7 +551,7 @@ static int spread_render(void *ctx, long k, struct dist_frame *out)
 		size_t stats_size;
 		FILE *stats = a->stats ? open_memstream(&out->stats, &stats_size) : NULL;
 		if (stats) {
-			print_stats(stats, &p, out->render_s, -1, &st);
+			print_stats(stats, &p, out->render_s, -1, &st, NULL, NULL);
 			fclose(stats);
 		}
 	}
@@ -558,7 +563,6 @@ static int spread_render(void *ctx, long k, struct dist_frame *out)
 	}
 	out->status = rc;
 	scene_free(&p.sc);
-	diag_fini(&d);
 	return rc;
 }
 

@@ -32,14 +32,21 @@ void dist_end(const struct dist_world *w);
  * when it did not fail itself (the scene is the same, so its own say it otherwise). */
 int dist_agree(const struct dist_world *w, int status, const char *messages);
 
+/* What process 0 received of one image from the others (--stats). */
+struct dist_traffic {
+	long tiles, messages;          /* tiles rendered by the others, and the messages they came in */
+	double bytes;                  /* of those messages */
+	double gather_s;               /* process 0's time receiving them and copying them into place */
+};
+
 /* Renders opt's rectangle over every process, each with opt->threads threads, tiles
  * handed out by process 0 a few at a time as each process asks. On process 0, img (the
- * rectangle's size) gets every pixel and *st the ray counts of all and the error
- * estimate, and opt->progress shows one bar; on the others img is NULL and *st their
- * own counts. Returns 0, or -1 when this process could not start its threads (process 0
- * then says so, or the run is aborted). */
+ * rectangle's size) gets every pixel, *st the ray counts of all and the error estimate,
+ * and *traffic what came from the others; opt->progress shows one bar. On the others
+ * img is NULL and *st their own counts. Returns 0, or -1 when this process could not
+ * start its threads (process 0 then says so, or the run is aborted). */
 int dist_render_image(const struct dist_world *w, const struct scene *sc, const struct render_options *opt,
-                      struct image *img, struct ray_stats *st);
+                      struct image *img, struct ray_stats *st, struct dist_traffic *traffic);
 
 /* A frame's outcome, from whichever process rendered it, for process 0 to report. */
 struct dist_frame {

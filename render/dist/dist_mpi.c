@@ -280,6 +280,7 @@ struct server {
 	int remote_done;               /* tiles done by the others */
 	int working;                   /* other processes that have not sent their counts */
 	struct ray_stats others;
+	struct dist_traffic traffic;
 };
 
 static float *image_tile(void *ctx, int t, size_t *stride)
@@ -314,6 +315,7 @@ static bool serve(struct server *s)
 		grant[1] = take(s, want);
 		MPI_Send(grant, 2, MPI_INT, from, TAG_GRANT, MPI_COMM_WORLD);
 	} else if (status.MPI_TAG == TAG_TILES) {
+		double t0 = clock_now();
 		int bytes;
 		MPI_Get_count(&status, MPI_BYTE, &bytes);
 		char *msg = xmalloc((size_t)bytes);
@@ -332,7 +334,11 @@ static bool serve(struct server *s)
 			tile_probes[t] = probes[i];
 		}
 		s->remote_done += h->count;
+		s->traffic.tiles += h->count;
+		s->traffic.messages++;
+		s->traffic.bytes += bytes;
 		free(msg);
+		s->traffic.gather_s += clock_now() - t0;
 	} else { /* TAG_DONE */
 		struct ray_stats st;
 		MPI_Recv(&st, (int)sizeof st, MPI_BYTE, from, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
@@ -343,7 +349,7 @@ static bool serve(struct server *s)
 }
 
 static int render_served(const struct dist_world *w, const struct scene *sc, const struct render_options *opt,
-                         struct image *img, struct ray_stats *st)
+                         struct image *img, struct ray_stats *st, struct dist_traffic *traffic)
 {
 	struct server s = { .opt = opt, .img = img, .ntiles = render_tile_count(opt), .working = w->size - 1 };
 	s.pool = render_pool_start(sc, opt, &(struct render_sink){ image_tile, NULL, &s });
@@ -381,15 +387,17 @@ static int render_served(const struct dist_world *w, const struct scene *sc, con
 		fputc('\n', stderr);
 	}
 	render_pool_finish(s.pool, &s.others, st);
+	*traffic = s.traffic;
 	return 0;
 }
 
 int dist_render_image(const struct dist_world *w, const struct scene *sc, const struct render_options *opt,
-                      struct image *img, struct ray_stats *st)
+                      struct image *img, struct ray_stats *st, struct dist_traffic *traffic)
 {
+	*traffic = (struct dist_traffic){ 0 };
 	if (w->size == 1)
 		return render_image(sc, opt, img, st);
-	return w->rank == 0 ? render_served(w, sc, opt, img, st) : render_share(sc, opt, st);
+	return w->rank == 0 ? render_served(w, sc, opt, img, st, traffic) : render_share(sc, opt, st);
 }
 
 /* ---- Whole frames ---- */
@@ -408,8 +416,10 @@ static void send_frame(const struct dist_frame *f)
 	MPI_Send(&h, (int)sizeof h, MPI_BYTE, 0, TAG_FRAME, MPI_COMM_WORLD);
 	if (h.nmessages + h.nstats > 0) {
 		char *text = xmalloc((size_t)h.nmessages + (size_t)h.nstats);
-		memcpy(text, f->messages, (size_t)h.nmessages);
-		memcpy(text + h.nmessages, f->stats, (size_t)h.nstats);
+		if (h.nmessages)
+			memcpy(text, f->messages, (size_t)h.nmessages);
+		if (h.nstats)
+			memcpy(text + h.nmessages, f->stats, (size_t)h.nstats);
 		MPI_Send(text, h.nmessages + h.nstats, MPI_CHAR, 0, TAG_FRAME_TEXT, MPI_COMM_WORLD);
 		free(text);
 	}

@@ -66,9 +66,10 @@ int dist_agree(const struct dist_world *w, int status, const char *messages)
 }
 
 int dist_render_image(const struct dist_world *w, const struct scene *sc, const struct render_options *opt,
-                      struct image *img, struct ray_stats *st)
+                      struct image *img, struct ray_stats *st, struct dist_traffic *traffic)
 {
 	(void)w;
+	*traffic = (struct dist_traffic){ 0 };
 	return render_image(sc, opt, img, st);
 }
 
