@@ -79,8 +79,19 @@ int dist_agree(const struct dist_world *w, int status, const char *messages)
 	int first = 0;
 	for (int r = 0; r < w->size && !first; r++)
 		first = all[r];
-	/* the others' messages, for process 0 to print when it did not fail itself */
-	int len = status && messages ? (int)strlen(messages) : 0;
+	/* the others' messages, each after a line naming its process and machine, for
+	 * process 0 to print when it did not fail itself */
+	char *mine = NULL;
+	if (status && w->rank != 0) {
+		char host[256] = "";
+		gethostname(host, sizeof host - 1);
+		const char *m = messages ? messages : "";
+		size_t size = strlen(m) + sizeof host + 128;
+		mine = xmalloc(size);
+		snprintf(mine, size, "scn: error: process %d of %d (on %s) failed where process 0 did not:\n%s", w->rank,
+		         w->size, host, m);
+	}
+	int len = mine ? (int)strlen(mine) : 0;
 	int *lens = w->rank == 0 ? xmalloc((size_t)w->size * sizeof *lens) : NULL;
 	MPI_Gather(&len, 1, MPI_INT, lens, 1, MPI_INT, 0, MPI_COMM_WORLD);
 	int *at = NULL;
@@ -94,15 +105,11 @@ int dist_agree(const struct dist_world *w, int status, const char *messages)
 		}
 		text = xmalloc(total + 1);
 	}
-	MPI_Gatherv(messages, len, MPI_CHAR, text, lens, at, MPI_CHAR, 0, MPI_COMM_WORLD);
+	MPI_Gatherv(mine, len, MPI_CHAR, text, lens, at, MPI_CHAR, 0, MPI_COMM_WORLD);
 	if (w->rank == 0 && status == 0)
 		for (int r = 1; r < w->size; r++)
-			if (all[r]) {
-				char host[256] = "";
-				gethostname(host, sizeof host - 1);
-				fprintf(stderr, "scn: error: process %d of %d failed where process 0 (on %s) did not:\n%.*s", r,
-				        w->size, host, lens[r], text + at[r]);
-			}
+			fprintf(stderr, "%.*s", lens[r], text + at[r]);
+	free(mine);
 	free(text);
 	free(at);
 	free(lens);

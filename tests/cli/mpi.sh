@@ -104,6 +104,17 @@ expect_status 1 mpi 3 render bad.scn -o bad.png
 [ -e bad.png ] && fail "a failed render wrote bad.png"
 expect_status 2 mpi 3 render spheres.scn --bogus
 [ "$(grep -c "^scn: unknown option '--bogus' for render" "$work/err")" = 1 ] || { fail "the usage error once"; cat "$work/err"; }
+# a process that fails where process 0 does not (here its own folder's scene names a mesh
+# that is not there): process 0 prints its messages under a line naming it, and writes nothing
+mkdir d0 d1
+cp spheres.scn d0/s.scn
+printf 'camera { location <0,0,-5> look_at <0,0,0> }\nmesh { "missing.obj" }\n' >d1/s.scn
+expect_status 1 env $leaks mpirun --oversubscribe --mca btl self,vader -np 1 --wdir d0 "$SCN" render s.scn -o out.png : \
+	-np 1 --wdir d1 "$SCN" render s.scn -o out.png
+expect_grep "$work/err" "^scn: error: process 1 of 2 \(on .*\) failed where process 0 did not:$"
+expect_grep "$work/err" "^s.scn:2:8: error: cannot read mesh file 'missing.obj': No such file or directory$"
+[ -e d0/out.png ] && fail "process 1's failure left an image"
+(cd d0 && no_temp "process 1's failure")
 # a frame that fails: named once, the others reported
 sed 's/^sphere { <clock \* 2 - 1, 0, 0>, 1/sphere { <0, 0, 0>, 2 - frame/' anim.scn >anim_bad.scn
 grep -q '2 - frame' anim_bad.scn || fail "could not make the failing animation"
