@@ -682,39 +682,47 @@ def mpirun(np, cmd):
 
 
 def distributed(work, runs):
-    """The headline (1280x1024, 4 spp) on one process of 2 threads and on 2 processes of 1
-    thread, in turn, run after run; and a 1-pixel render with and without mpirun."""
-    scene = os.path.join(work, "headline.scn")
-    scenes.headline(scene)
-    out = os.path.join(work, "dist.png")
-    base = [SCN, "render", scene, "-o", out, "-s", "4", "--stats", "--no-progress"]
-    one, many, traffic = [], [], None
-    for r in range(runs):
-        log("bench: processes: run %d" % (r + 1))
-        one.append(timed(base + ["-j", str(DIST_PROCESSES)]))
-        many.append(timed(mpirun(DIST_PROCESSES, base + ["-j", "1"])))
-        traffic = STATS_TRAFFIC.search(many[-1][2])
+    """Each scene (the headline, 1280x1024, 4 spp; the same with its cost in one corner) on
+    one process of 2 threads and on 2 processes of 1 thread, in turn, run after run; and a
+    1-pixel render with and without mpirun."""
+    rows = []
+    for name, make in (("headline", scenes.headline), ("corner", scenes.corner)):
+        scene = os.path.join(work, name + ".scn")
+        make(scene)
+        out = os.path.join(work, "dist.png")
+        base = [SCN, "render", scene, "-o", out, "-s", "4", "--stats", "--no-progress"]
+        one, many, traffic = [], [], None
+        for r in range(runs):
+            log("bench: processes: %s, run %d" % (name, r + 1))
+            one.append(timed(base + ["-j", str(DIST_PROCESSES)]))
+            many.append(timed(mpirun(DIST_PROCESSES, base + ["-j", "1"])))
+            traffic = STATS_TRAFFIC.search(many[-1][2])
+        rows.append((name, one, many, traffic))
     tiny = os.path.join(work, "tiny.scn")
     with open(tiny, "w") as f:
         f.write("camera { location <0, 0, -5>  look_at <0, 0, 0>  resolution 1, 1 }\nsphere { <0, 0, 0>, 1 }\n")
+    out = os.path.join(work, "tiny.png")
     start_plain = [timed([SCN, "render", tiny, "-o", out, "-q"])[0] for _ in range(max(runs, 5))]
     start_mpi = [timed(mpirun(DIST_PROCESSES, [SCN, "render", tiny, "-o", out, "-q"]))[0] for _ in range(max(runs, 5))]
-    return one, many, traffic, start_plain, start_mpi
+    return rows, start_plain, start_mpi
 
 
-def print_distributed(one, many, traffic, start_plain, start_mpi, runs):
+def print_distributed(rows, start_plain, start_mpi, runs):
     med = lambda xs, f: statistics.median(f(x) for x in xs)
     render = lambda t: scn_stats(t[2])["render"]
-    r1, rn = med(one, render), med(many, render)
-    w1, wn = med(one, lambda t: t[0]), med(many, lambda t: t[0])
-    print("over processes: the headline, 1280x1024, 4 spp, 1000 spheres; median of %d runs, taken in turn" % runs)
-    print("  1 process x %d threads:  render %.3f s, wall %.3f s" % (DIST_PROCESSES, r1, w1))
-    print("  %d processes x 1 thread: render %.3f s, wall %.3f s (mpirun)" % (DIST_PROCESSES, rn, wn))
-    print("  MPI overhead: render %+.1f%%, wall %+.1f%%" % (100 * (rn / r1 - 1), 100 * (wn / w1 - 1)))
-    if traffic:
-        n, tiles, total, msgs, nbytes, per, gather = traffic.groups()
-        print("  to process 0: %s of %s tiles in %s messages, %s bytes (%s a tile); gathering them took %s s "
-              "(%.1f us a message)" % (tiles, total, msgs, nbytes, per, gather, 1e6 * float(gather) / max(1, int(msgs))))
+    print("over processes: 1280x1024, 4 spp; median of %d runs, taken in turn; render is --stats's phase on "
+          "process 0, wall includes mpirun" % runs)
+    for name, one, many, traffic in rows:
+        r1, rn = med(one, render), med(many, render)
+        w1, wn = med(one, lambda t: t[0]), med(many, lambda t: t[0])
+        print("  %-8s 1 process x %d threads:  render %.3f s, wall %.3f s" % (name, DIST_PROCESSES, r1, w1))
+        print("  %-8s %d processes x 1 thread: render %.3f s, wall %.3f s" % (name, DIST_PROCESSES, rn, wn))
+        print("  %-8s MPI overhead: render %+.1f%%, wall %+.1f%%" % (name, 100 * (rn / r1 - 1), 100 * (wn / w1 - 1)))
+        if traffic:
+            n, tiles, total, msgs, nbytes, per, gather = traffic.groups()
+            print("  %-8s to process 0: %s of %s tiles in %s messages, %s bytes (%s a tile); gathering them took "
+                  "%s s (%.1f us a message)" % (name, tiles, total, msgs, nbytes, per, gather,
+                                                1e6 * float(gather) / max(1, int(msgs))))
     print("  start-up, a 1-pixel render: plain %.3f s, under mpirun -np %d %.3f s (medians of %d)"
           % (statistics.median(start_plain), DIST_PROCESSES, statistics.median(start_mpi), len(start_plain)))
 

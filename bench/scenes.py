@@ -65,6 +65,15 @@ def headline(path, what="headline: 1000 spheres over a checkered floor, a tenth 
                                 loops=sphere_loops(1000, mats, HEADLINE_CENTRE, HEADLINE_RADIUS)))
 
 
+def corner(path):
+    """The headline's floor and lights, its cost in one corner: 400 mirror and glass spheres
+    packed at the back left, the top left of the picture (the MPI bench's imbalance)."""
+    centre = "<-9 + 4 * rand(3 * {k}), 2 + 3 * rand(3 * {k} + 1), 6 + 4 * rand(3 * {k} + 2)>"
+    write(path, HEADLINE.format(what="corner: the headline's floor, 400 mirror and glass spheres in its top left corner",
+                                setup=HEADLINE_SETUP.format(),
+                                loops=sphere_loops(400, ["mirror", "glass"], centre, "0.3 + 0.2 * rand(7 * {k} + 5)")))
+
+
 # The scenes of LANGUAGE.md section 12's lights and cameras for the table: the headline's
 # spheres and floor at 640x480 under another camera, lights or fog ({camera} and {lights}
 # are whole statements).
