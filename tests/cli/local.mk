@@ -19,3 +19,5 @@ TESTS += tests/cli/anim.sh
 EXTRA_DIST += tests/cli/anim.sh
 TESTS += tests/cli/mesh_materials.sh
 EXTRA_DIST += tests/cli/mesh_materials.sh
+TESTS += tests/cli/tile.sh
+EXTRA_DIST += tests/cli/tile.sh
