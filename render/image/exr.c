@@ -148,6 +148,26 @@ static exr_result_t get_header(exr_context_t ctx, const exr_attr_box2i_t *dw, st
 	return rv;
 }
 
+/* The library's compressor, which compress_chunk runs. */
+struct compressor {
+	exr_result_t (*run)(exr_encode_pipeline_t *enc);
+};
+
+/* OpenEXR's ZIP encoder up to 3.4.7 (its issue 2306, mended by pull request 2307) keeps
+ * a chunk's zlib bytes when they are exactly as many as the chunk's raw bytes, and a
+ * reader takes a chunk of that size for raw bytes: garbage, found in one-row --tile
+ * parts of a mesh. This runs the library's compressor and then stores the raw bytes in
+ * that case, as the mended encoder does; in any other, the bytes are the library's. */
+static exr_result_t compress_chunk(exr_encode_pipeline_t *enc)
+{
+	const struct compressor *library = enc->encoding_user_data;
+	exr_result_t rv = library->run(enc);
+	if (rv == EXR_ERR_SUCCESS && enc->compressed_bytes == enc->packed_bytes &&
+	    enc->compressed_buffer != enc->packed_buffer)
+		memcpy(enc->compressed_buffer, enc->packed_buffer, enc->packed_bytes);
+	return rv;
+}
+
 /* One scanline part, ZIP-compressed (lossless, and the usual choice for renders),
  * with only the attributes the format requires (and "type", which the library adds):
  * no dates, software or host names, so that the same image always gives the same
@@ -171,6 +191,7 @@ int image_exr_write(const struct image *img, int fd, const char *path, bool floa
 	int part = 0;
 	int32_t lines = 0;
 	exr_pixel_type_t type = float32 ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
+	struct compressor library;
 	exr_result_t rv = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
 	if (rv == EXR_ERR_SUCCESS)
 		rv = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
@@ -221,6 +242,11 @@ int image_exr_write(const struct image *img, int fd, const char *path, bool floa
 			ch->user_bytes_per_element = sizeof *buf;
 		}
 		rv = exr_encoding_choose_default_routines(ctx, part, &enc);
+		if (rv == EXR_ERR_SUCCESS && enc.compress_fn) {
+			library.run = enc.compress_fn;
+			enc.encoding_user_data = &library;
+			enc.compress_fn = compress_chunk;
+		}
 		if (rv == EXR_ERR_SUCCESS)
 			rv = exr_encoding_run(ctx, part, &enc);
 	}
