@@ -16,14 +16,6 @@ plane  { <0, 1, 0>, 0  material { diffuse checker(<0.9, 0.9, 0.9>, <0.2, 0.2, 0.
 sphere { <0, 0.8, 0>, 0.8  material { diffuse <0.8, 0.3, 0.2>  specular 0.5  shininess 60 } }
 sphere { <1, 0.3, -1>, 0.3  material { diffuse 0.1  transmit 0.9  ior 1.5 } }
 EOF
-cp "$SCN_SRCDIR/examples/bunny.ply" .
-cat >bunny.scn <<'EOF'
-camera { location <-0.4, 1.1, -3.8>  look_at <0.05, 0.55, 0>  fov 40  resolution 32, 64 }
-light  { position <-3, 6, -4> }
-samples 4
-plane { <0, 1, 0>, 0  material { diffuse checker(<0.85, 0.85, 0.85>, <0.3, 0.3, 0.35>, 0.5) } }
-mesh { "bunny.ply"  scale 8  rotate <0, -150, 0>  smooth  material { diffuse <0.85, 0.72, 0.55> } }
-EOF
 sed 's/^camera.*/&\nsamples { count 16  target_error 0.02 }/' balls.scn >adaptive.scn
 
 # whole NAME SCENE ARGS...: renders SCENE with ARGS into NAME.png, NAME-16.png,
@@ -70,9 +62,12 @@ whole adaptive adaptive.scn
 for n in 1 2 7 64; do
 	split adaptive $n adaptive.scn
 done
-whole bunny bunny.scn
+# (part 39 of 64 is a chunk whose zlib bytes are exactly as many as its raw bytes, which
+# OpenEXR up to 3.4.7 writes wrongly: exr.c's compress_chunk)
+bunny=$SCN_SRCDIR/examples/bunny.scn
+whole bunny "$bunny" -W 32 -H 64 -s 1
 for n in 1 2 7 64; do
-	split bunny $n bunny.scn
+	split bunny $n "$bunny" -W 32 -H 64 -s 1
 done
 # a --region is the image that is split
 whole region balls.scn -s 4 --region 3,10,21,50
