@@ -11,6 +11,7 @@
 
 #include "cli.h"
 #include "image_file.h"
+#include "memory.h"
 #include "tile.h"
 #include "tile_part.h"
 #include "xalloc.h"
@@ -121,6 +122,24 @@ static bool cover_once(const struct seen *seen, int n, long parts, int height)
 	return true;
 }
 
+/* The whole image that part p of the file at path is a part of, in *whole; its size is
+ * the file's word, so that memory is checked first. Returns the exit status, after the
+ * message. */
+static int new_whole(const struct tile_part *p, const char *path, struct image **whole)
+{
+	char why[160];
+	if (!memory_fits(image_bytes(p->width, p->height), why, sizeof why)) {
+		fprintf(stderr, "scn: error: '%s': the %d x %d image %s\n", path, p->width, p->height, why);
+		return EXIT_RENDER;
+	}
+	if (!(*whole = image_new(p->width, p->height))) {
+		fprintf(stderr, "scn: error: '%s': a %d x %d image has more pixels than the limit of 2^28\n", path,
+		        p->width, p->height);
+		return EXIT_RENDER;
+	}
+	return 0;
+}
+
 /* Reads the parts into *whole, checking them as it goes, and the error estimate into
  * *rmse (-1: none). Returns the exit status, after the message. */
 static int join(const struct merge_args *a, struct image **whole, double *rmse)
@@ -138,12 +157,11 @@ static int join(const struct merge_args *a, struct image **whole, double *rmse)
 			rc = cli_file_status(e);
 			break;
 		}
-		if (i == 0 && !(*whole = image_new(first.p.width, first.p.height))) {
-			fprintf(stderr, "scn: error: cannot allocate a %d x %d image\n", first.p.width, first.p.height);
-			rc = EXIT_RENDER;
-		} else if (i > 0 && !same_render(&first, a->parts[0], &f, a->parts[i])) {
+		if (i == 0)
+			rc = new_whole(&first.p, a->parts[0], whole);
+		else if (!same_render(&first, a->parts[0], &f, a->parts[i]))
 			rc = EXIT_IO;
-		} else {
+		if (rc == 0) {
 			const struct tile_part *p = &part->p;
 			int y0, y1;
 			tile_band(p->t.k, p->t.n, 0, p->height, &y0, &y1);
