@@ -117,6 +117,15 @@ static exr_result_t set_header(exr_context_t ctx, int part, const struct image_e
 	return rv;
 }
 
+void image_exr_header_free(struct image_exr_header *h)
+{
+	for (int i = 0; i < h->nattrs; i++) {
+		free((void *)h->attrs[i].name);
+		free((void *)h->attrs[i].value);
+	}
+	h->nattrs = 0;
+}
+
 /* The header of part 0 that image_exr_read returns: its windows and its string
  * attributes named scn..., copied, the first IMAGE_EXR_ATTRS of them. */
 static exr_result_t get_header(exr_context_t ctx, const exr_attr_box2i_t *dw, struct image_exr_header *h)

@@ -6,7 +6,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -39,7 +38,7 @@ int image_file_create(struct image_file *f, const char *path, const struct image
                       char *err, size_t errlen)
 {
 	*f = (struct image_file){ .path = path, .format = image_format_of(path), .fd = -1,
-	                          .opt = opt ? *opt : (struct image_write_options){ 8, false, NULL } };
+	                          .opt = opt ? *opt : (struct image_write_options){ .bit_depth = 8 } };
 	if (f->format < 0) {
 		snprintf(err, errlen, "cannot write '%s': unknown image format (use .png, .exr or .ppm)", path);
 		return EINVAL;
@@ -148,13 +147,4 @@ int image_read_exr_header(const char *path, struct image **out, struct image_exr
 {
 	*h = (struct image_exr_header){ .nattrs = 0 };
 	return read_file(path, NULL, h, out, err, errlen);
-}
-
-void image_exr_header_free(struct image_exr_header *h)
-{
-	for (int i = 0; i < h->nattrs; i++) {
-		free((void *)h->attrs[i].name);
-		free((void *)h->attrs[i].value);
-	}
-	h->nattrs = 0;
 }

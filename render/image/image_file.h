@@ -73,7 +73,7 @@ int image_read(const char *path, struct image **out, char *err, size_t errlen);
  * attributes with image_exr_header_free; on failure *h holds none. */
 int image_read_exr_header(const char *path, struct image **out, struct image_exr_header *h,
                           char *err, size_t errlen);
-/* Frees the attributes image_read_exr_header copied into *h. */
+/* Frees the attributes image_read_exr_header copied into *h. (exr.c) */
 void image_exr_header_free(struct image_exr_header *h);
 
 /* What image_read_with may decide differently from image_read. */
