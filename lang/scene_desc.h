@@ -230,6 +230,9 @@ void scene_desc_init(struct scene_desc *s);
 void scene_desc_free(struct scene_desc *s);
 /* Writes a canonical text form, one line an entity, for golden tests. */
 void scene_desc_dump(const struct scene_desc *s, FILE *out);
+/* The same with every number to 17 significant digits, so that two scenes whose dumps
+ * are equal have the same numbers (what names a --tile part's scene). */
+void scene_desc_dump_exact(const struct scene_desc *s, FILE *out);
 const char *scene_desc_pattern_name(enum sample_pattern p);
 /* The name of pattern p as written in a scene ("marble"). */
 const char *scene_desc_texture_name(enum pattern_name p);

@@ -320,6 +320,7 @@ void render_pool_finish(struct render_pool *p, const struct ray_stats *more, str
 	for (int t = 0; t < p->ntiles; t++)
 		probe_sq += p->tile_probe[t];
 	/* per channel, and the difference of two replicas has twice the variance of one */
+	st->probe_sum = probe_sq;
 	st->estimated_rmse = st->probe_pixels ? sqrt(probe_sq / (6.0 * (double)st->probe_pixels)) : -1;
 	pthread_cond_destroy(&p->fed);
 	pthread_mutex_destroy(&p->lock);

@@ -18,10 +18,13 @@ struct ray_stats {
 	uint64_t nonfinite;            /* radiance samples that were NaN or infinite (must stay 0) */
 	uint64_t probe_pixels;         /* pixels rendered twice to estimate the error (render.c) */
 	uint64_t probe_camera;         /* the camera rays of their second replica, not in camera */
-	double estimated_rmse;         /* of the image (render_image); < 0 for grid and center */
+	double probe_sum;              /* over the probe pixels, the squared difference of their two
+	                                * replicas, summed in tile order (render.c) */
+	double estimated_rmse;         /* of the image (render_image): sqrt(probe_sum / (6
+	                                * probe_pixels)); < 0 for grid and center */
 };
 
-/* Adds from's counts to to's (estimated_rmse stays to's). */
+/* Adds from's counts to to's (probe_sum and estimated_rmse stay to's). */
 void trace_stats_add(struct ray_stats *to, const struct ray_stats *from);
 
 /* Where a ray stands in its camera sample's tree of rays: its depth (a camera ray's is

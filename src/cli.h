@@ -84,5 +84,6 @@ int cmd_render(const struct command *self, int argc, char **argv);
 int cmd_pov(const struct command *self, int argc, char **argv);
 int cmd_diff(const struct command *self, int argc, char **argv);
 int cmd_converge(const struct command *self, int argc, char **argv);
+int cmd_merge(const struct command *self, int argc, char **argv);
 
 #endif

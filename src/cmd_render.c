@@ -22,6 +22,8 @@
 #include "lower.h"
 #include "render.h"
 #include "scene_desc.h"
+#include "tile.h"
+#include "tile_part.h"
 #include "xalloc.h"
 
 struct render_args {
@@ -31,18 +33,20 @@ struct render_args {
 	bool float32, stats, quiet;
 	int progress;                      /* -1: when standard error is a terminal */
 	enum accel_kind accel;
+	const char *accel_name;
 	bool region;
 	long x0, y0, x1, y1;
 	bool clock_given;                  /* --clock */
 	double clock;
 	bool animate, cyclic;              /* --frames, --cyclic */
 	struct anim_frames frames;
+	struct tile tile;                  /* --tile; n 0: none */
 };
 
 enum {
 	OPT_OUT, OPT_WIDTH, OPT_HEIGHT, OPT_SAMPLES, OPT_PATTERN, OPT_DEPTH, OPT_THREADS, OPT_ACCEL, OPT_REGION,
 	OPT_SEED, OPT_BIT_DEPTH, OPT_FLOAT, OPT_STATS, OPT_PROGRESS, OPT_NO_PROGRESS, OPT_QUIET, OPT_CLOCK, OPT_FRAMES,
-	OPT_CYCLIC, NOPTIONS
+	OPT_CYCLIC, OPT_TILE, NOPTIONS
 };
 static const struct cli_option options[NOPTIONS] = {
 	[OPT_OUT] = { NULL, 'o', true },
@@ -64,6 +68,7 @@ static const struct cli_option options[NOPTIONS] = {
 	[OPT_CLOCK] = { "clock", 0, true },
 	[OPT_FRAMES] = { "frames", 0, true },
 	[OPT_CYCLIC] = { "cyclic", 0, false },
+	[OPT_TILE] = { "tile", 0, true },
 };
 
 /* Reads the command line into *a: 0, or -1 once the help is shown, or EXIT_USAGE after a
@@ -71,7 +76,8 @@ static const struct cli_option options[NOPTIONS] = {
 static int parse_args(const struct command *self, int argc, char **argv, struct render_args *a)
 {
 	*a = (struct render_args){ .width = -1, .height = -1, .samples = -1, .depth = -1, .threads = 0,
-	                           .seed = -1, .bit_depth = 8, .pattern = -1, .progress = -1 };
+	                           .seed = -1, .bit_depth = 8, .pattern = -1, .progress = -1,
+	                           .accel_name = "bvh" };
 	struct cli_parser p;
 	cli_parser_init(&p, self, options, NOPTIONS, argc, argv);
 	int o;
@@ -96,6 +102,12 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 				return EXIT_USAGE;
 			a->animate = true;
 			continue;
+		case OPT_TILE: {
+			const char *why = tile_parse(v, &a->tile);
+			if (why)
+				return cli_usage_error(self, "bad --tile '%s': %s", v, why);
+			continue;
+		}
 		case OPT_WIDTH: target = &a->width; lo = 1; hi = 65536; break;
 		case OPT_HEIGHT: target = &a->height; lo = 1; hi = 65536; break;
 		case OPT_SAMPLES: target = &a->samples; lo = 1; hi = 65536; break;
@@ -120,6 +132,7 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 				a->accel = ACCEL_NONE;
 			else
 				return cli_usage_error(self, "unknown accelerator '%s' (bvh, grid or none)", v);
+			a->accel_name = v;
 			continue;
 		default: { /* OPT_REGION */
 			char tail;
@@ -139,6 +152,11 @@ static int parse_args(const struct command *self, int argc, char **argv, struct 
 		return cli_usage_error(self, "--clock and --frames do not go together: --frames sets each frame's clock");
 	if (a->cyclic && !a->animate)
 		return cli_usage_error(self, "--cyclic needs --frames");
+	if (a->tile.n && a->animate)
+		return cli_usage_error(self, "--tile and --frames do not go together: render one frame per task with "
+		                       "--frames F..F+1");
+	if (a->tile.n && a->out && image_format_of(a->out) != IMAGE_EXR)
+		return cli_usage_error(self, "--tile writes a 32-bit float OpenEXR part: '%s' must end in .exr", a->out);
 	a->frames.cyclic = a->cyclic;
 	if (!(a->scene = cli_scene(&p)))
 		return EXIT_USAGE;
@@ -200,6 +218,38 @@ static int image_fits(const struct render_args *a, const struct scene_desc *s, s
 	return cli_memory_fits(d, *options ? NULL : &s->camera.resolution_span, options, what, image_bytes(w, h));
 }
 
+/* --tile: the part being rendered and the strings its header points to. */
+struct tile_job {
+	struct tile_part p;
+	char *settings;
+	char scene[33];
+};
+
+/* --tile: narrows ro, the output rectangle, to the part's rows, with the whole's pixel
+ * count for the probes, and names the part's origin in *part from s (the scene after the
+ * overrides). Returns the exit status after the message: a usage error when there are
+ * more parts than rows, EXIT_IO when a file the scene reads cannot be read. */
+static int start_part(const struct command *self, const struct render_args *a, const struct scene_desc *s,
+                      struct render_options *ro, struct tile_job *part)
+{
+	int w = ro->x1 - ro->x0, h = ro->y1 - ro->y0;
+	if (a->tile.n > h)
+		return cli_usage_error(self, "--tile %ld/%ld: %ld parts are more than the %d rows of the image", a->tile.k,
+		                       a->tile.n, a->tile.n, h);
+	ro->whole_pixels = (int64_t)w * h;
+	tile_band(a->tile.k, a->tile.n, ro->y0, h, &ro->y0, &ro->y1);
+	part->settings = tile_settings(s, a->region ? (const long[4]){ a->x0, a->y0, a->x1, a->y1 } : NULL,
+	                               a->accel_name);
+	part->p = (struct tile_part){ a->tile, w, h, PACKAGE_VERSION, part->settings, part->scene, false, 0, 0 };
+	char err[512];
+	int e = tile_scene_hash(s, part->settings, part->scene, err, sizeof err);
+	if (e) {
+		fprintf(stderr, "scn: %s\n", err);
+		return cli_file_status(e);
+	}
+	return 0;
+}
+
 /* What is known of a render once the scene is loaded, lowered and built: the same on
  * every process of a render over several. */
 struct prepared {
@@ -207,6 +257,7 @@ struct prepared {
 	struct lower_times wt;
 	struct scene sc;
 	struct render_options ro;
+	struct tile_job part;              /* with --tile */
 	double bvh_s;
 };
 
@@ -283,9 +334,11 @@ static int prepare(const struct command *self, const struct render_args *a, cons
 		ro->x1 = desc.camera.width, ro->y1 = desc.camera.height;
 		if (a->region)
 			ro->x0 = (int)a->x0, ro->y0 = (int)a->y0, ro->x1 = (int)a->x1, ro->y1 = (int)a->y1;
-		if (makes_image)
-			rc = image_fits(a, &desc, d, ro->x1 - ro->x0, ro->y1 - ro->y0);
+		if (a->tile.n)
+			rc = start_part(self, a, &desc, ro, &p->part);
 	}
+	if (rc == 0 && makes_image)
+		rc = image_fits(a, &desc, d, ro->x1 - ro->x0, ro->y1 - ro->y0);
 	int64_t image = makes_image ? (int64_t)image_bytes(ro->x1 - ro->x0, ro->y1 - ro->y0) : 0;
 	if (rc == 0)
 		rc = (int)lower_scene(d, &desc, &p->sc, &p->wt, image);
@@ -358,7 +411,7 @@ static int render_shot(const struct command *self, const struct render_args *a, 
 	/* the output file exists from the start, so that an unwritable place is found
 	 * before the render and not after it */
 	char err[512];
-	struct image_write_options wo = { .bit_depth = (int)a->bit_depth, .float32 = a->float32 };
+	struct image_write_options wo = { .bit_depth = (int)a->bit_depth, .float32 = a->float32 || a->tile.n };
 	struct image_file file;
 	int rc = writer ? image_file_create(&file, s->out, &wo, err, sizeof err) : 0;
 	if (rc != 0)
@@ -412,6 +465,16 @@ static int render_shot(const struct command *self, const struct render_args *a, 
 	if (!writer)
 		goto done;
 	warn_nonfinite(stderr, &st, s->moment);
+	struct tile_header header;
+	if (a->tile.n) {
+		/* the estimate's sums, for scn merge's estimate of the whole */
+		struct tile_part *part = &p.part.p;
+		part->probed = true;
+		part->probe_pixels = st.probe_pixels;
+		part->probe_sum = st.probe_sum;
+		tile_header_init(&header, part);
+		file.opt.exr = &header.exr;
+	}
 	t0 = clock_now();
 	file_open = false;
 	int e = image_file_commit(&file, img, err, sizeof err);
@@ -429,6 +492,7 @@ done:
 		image_file_commit(&file, NULL, err, sizeof err);
 	image_free(img);
 	scene_free(&p.sc);
+	free(p.part.settings);
 	return rc;
 }
 
@@ -637,7 +701,8 @@ static int render_run(const struct command *self, const struct render_args *a, c
 		return render_frames_spread(self, a, progress, w);
 	if (a->animate)
 		return render_frames(self, a, progress, w);
-	char *out = a->out ? xstrdup(a->out) : cli_default_output(a->scene, ".png");
+	char *out = a->out ? xstrdup(a->out) : a->tile.n ? tile_default_output(a->scene, &a->tile)
+	                                     : cli_default_output(a->scene, ".png");
 	int rc = known_format(self, out);
 	if (rc == 0) {
 		char clock[32], moment[48];

@@ -21,7 +21,7 @@ static const struct command commands[] = {
 	  "scn render SCENE [-o OUT] [-W WIDTH] [-H HEIGHT] [-s SAMPLES] [-p PATTERN] [-d MAX_DEPTH]\n"
 	  "                  [-j THREADS] [--accel bvh|grid|none] [--region X0,Y0,X1,Y1] [--seed N]\n"
 	  "                  [--bit-depth 8|16] [--float] [--stats] [--progress | --no-progress] [-q]\n"
-	  "                  [--clock C | --frames A..B [--cyclic]]",
+	  "                  [--clock C | --frames A..B [--cyclic]] [--tile K/N]",
 	  "Renders SCENE ('-' reads standard input) to OUT, by default the scene's name with .png.\n"
 	  "OUT's extension picks the format: .png (8-bit sRGB, or --bit-depth 16), .exr (linear\n"
 	  "half float, or --float for 32-bit), .ppm (sRGB, 8 or 16 bits). The image is written to a\n"
@@ -40,15 +40,34 @@ static const struct command commands[] = {
 	  "  --frames A..B renders frames A, A+1, ..., B-1, each a whole evaluation of the scene\n"
 	  "                with frame its number and clock going from 0 at A to 1 at B-1\n"
 	  "  --cyclic      with --frames: clock (frame - A) / (B - A), so B-1 leads back to A\n"
+	  "  --tile K/N    renders part K (from 0) of the image split into N bands of rows, part K\n"
+	  "                the rows [floor(K*H/N), floor((K+1)*H/N)) of the image (or of --region's\n"
+	  "                rectangle), as a 32-bit float OpenEXR file (default: SCENE-K-of-N.exr)\n"
+	  "                that places it in the whole and names the scene and settings; 'scn merge'\n"
+	  "                joins the parts into the image a render of the whole would write\n"
 	  "With --frames, OUT's %d or %0Nd (one; %% is a '%') is the frame's number; without\n"
 	  "one, the number goes before the extension, padded with zeros to the digits of B-1\n"
 	  "(anim.png, --frames 1..25: anim01.png ... anim24.png). The first frame's warnings are\n"
 	  "shown, a later frame's diagnostics only when it fails; a failure names its frame and\n"
 	  "ends the run. --progress counts frames, --stats is per frame. SCENE is read for each\n"
-	  "frame, so it cannot be '-'.\n"
+	  "frame, so it cannot be '-'. --tile renders one image: render one frame per task instead.\n"
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written, 4 the render failed.\n",
 	  cmd_render },
+	{ "merge", "scn merge PART.exr ... -o OUT [--bit-depth 8|16] [--float] [-q]",
+	  "Joins the parts that 'scn render --tile K/N' wrote, given in any order, into OUT (.png,\n"
+	  ".exr or .ppm, as for scn render), which has the bytes that one render of the whole image\n"
+	  "with the same options writes. Each part must be one, from the same scn version, scene\n"
+	  "(the scene after the command line's overrides and the files it reads), settings and split\n"
+	  "N, and every part 0 .. N-1 must be there once; otherwise nothing is written. Prints the\n"
+	  "size, the number of parts and the error estimate of the whole, as scn render does.\n"
+	  "  -o OUT        the image to write (required)\n"
+	  "  --bit-depth   8 or 16 bits per channel for PNG and PPM\n"
+	  "  --float       32-bit float EXR instead of half\n"
+	  "  -q            no 'wrote' line\n"
+	  "Exit status: 0 success, 2 bad command line, 3 a part could not be read, is not a part,\n"
+	  "or the parts do not make one image, or OUT could not be written, 4 out of memory.\n",
+	  cmd_merge },
 	{ "pov", "scn pov SCENE [-o OUT.pov] [--clock C]",
 	  "Writes the POV-Ray 3.7 scene that renders the same image as SCENE ('-' reads standard\n"
 	  "input) to OUT.pov, by default the scene's name with .pov ('-o -': standard output).\n"

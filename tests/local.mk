@@ -29,3 +29,4 @@ include tests/bench/local.mk
 include tests/editors/local.mk
 include tests/mesh/local.mk
 include tests/pairs/local.mk
+include tests/cpu/local.mk

@@ -100,6 +100,83 @@ static int fail(const struct exr_io *io, exr_result_t rv, const char *verb, cons
 	return rv == EXR_ERR_OUT_OF_MEMORY ? ENOMEM : strcmp(verb, "read") == 0 ? EINVAL : EIO;
 }
 
+/* The windows and string attributes of hdr on a part whose required attributes are
+ * set for a w x h image. */
+static exr_result_t set_header(exr_context_t ctx, int part, const struct image_exr_header *hdr, int w,
+                               int h)
+{
+	exr_attr_box2i_t display = { .min.x = hdr->display[0], .min.y = hdr->display[1],
+	                             .max.x = hdr->display[2] - 1, .max.y = hdr->display[3] - 1 };
+	exr_attr_box2i_t data = { .min.x = hdr->data_x, .min.y = hdr->data_y,
+	                          .max.x = hdr->data_x + w - 1, .max.y = hdr->data_y + h - 1 };
+	exr_result_t rv = exr_set_display_window(ctx, part, &display);
+	if (rv == EXR_ERR_SUCCESS)
+		rv = exr_set_data_window(ctx, part, &data);
+	for (int i = 0; i < hdr->nattrs && rv == EXR_ERR_SUCCESS; i++)
+		rv = exr_attr_set_string(ctx, part, hdr->attrs[i].name, hdr->attrs[i].value);
+	return rv;
+}
+
+void image_exr_header_free(struct image_exr_header *h)
+{
+	for (int i = 0; i < h->nattrs; i++) {
+		free((void *)h->attrs[i].name);
+		free((void *)h->attrs[i].value);
+	}
+	h->nattrs = 0;
+}
+
+/* The header of part 0 that image_exr_read returns: its windows and its string
+ * attributes named scn..., copied, the first IMAGE_EXR_ATTRS of them. */
+static exr_result_t get_header(exr_context_t ctx, const exr_attr_box2i_t *dw, struct image_exr_header *h)
+{
+	exr_attr_box2i_t display;
+	int32_t count;
+	exr_result_t rv = exr_get_display_window(ctx, 0, &display);
+	if (rv == EXR_ERR_SUCCESS)
+		rv = exr_get_attribute_count(ctx, 0, &count);
+	if (rv != EXR_ERR_SUCCESS)
+		return rv;
+	/* [x0, x1): the library checks max >= min; one past an int's range stays in int64 */
+	if ((int64_t)display.max.x + 1 > INT32_MAX || (int64_t)display.max.y + 1 > INT32_MAX)
+		return EXR_ERR_INVALID_ATTR;
+	*h = (struct image_exr_header){ { display.min.x, display.min.y, display.max.x + 1, display.max.y + 1 },
+	                                dw->min.x, dw->min.y, 0, { { 0 } } };
+	for (int32_t i = 0; i < count && h->nattrs < IMAGE_EXR_ATTRS; i++) {
+		const exr_attribute_t *a;
+		rv = exr_get_attribute_by_index(ctx, 0, EXR_ATTR_LIST_FILE_ORDER, i, &a);
+		if (rv != EXR_ERR_SUCCESS)
+			break;
+		if (a->type != EXR_ATTR_STRING || strncmp(a->name, "scn", 3) != 0)
+			continue;
+		char *value = xmalloc((size_t)a->string->length + 1);
+		memcpy(value, a->string->str, (size_t)a->string->length);
+		value[a->string->length] = '\0';
+		h->attrs[h->nattrs++] = (struct image_attr){ xstrdup(a->name), value };
+	}
+	return rv;
+}
+
+/* The library's compressor, which compress_chunk runs. */
+struct compressor {
+	exr_result_t (*run)(exr_encode_pipeline_t *enc);
+};
+
+/* OpenEXR's ZIP encoder up to 3.4.7 (its issue 2306, mended by pull request 2307) keeps
+ * a chunk's zlib bytes when they are exactly as many as the chunk's raw bytes, and a
+ * reader takes a chunk of that size for raw bytes: garbage, found in one-row --tile
+ * parts of a mesh. This runs the library's compressor and then stores the raw bytes in
+ * that case, as the mended encoder does; in any other, the bytes are the library's. */
+static exr_result_t compress_chunk(exr_encode_pipeline_t *enc)
+{
+	const struct compressor *library = enc->encoding_user_data;
+	exr_result_t rv = library->run(enc);
+	if (rv == EXR_ERR_SUCCESS && enc->compressed_bytes == enc->packed_bytes &&
+	    enc->compressed_buffer != enc->packed_buffer)
+		memcpy(enc->compressed_buffer, enc->packed_buffer, enc->packed_bytes);
+	return rv;
+}
+
 /* One scanline part, ZIP-compressed (lossless, and the usual choice for renders),
  * with only the attributes the format requires (and "type", which the library adds):
  * no dates, software or host names, so that the same image always gives the same
@@ -107,7 +184,7 @@ static int fail(const struct exr_io *io, exr_result_t rv, const char *verb, cons
  * since nothing downstream can use it; other values, negative or infinite, as they
  * are (half float turns values beyond 65504 into infinity). */
 int image_exr_write(const struct image *img, int fd, const char *path, bool float32,
-                    char *err, size_t errlen)
+                    const struct image_exr_header *hdr, char *err, size_t errlen)
 {
 	struct exr_io io = { .fd = fd };
 	exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -123,12 +200,16 @@ int image_exr_write(const struct image *img, int fd, const char *path, bool floa
 	int part = 0;
 	int32_t lines = 0;
 	exr_pixel_type_t type = float32 ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
+	struct compressor library;
 	exr_result_t rv = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
 	if (rv == EXR_ERR_SUCCESS)
 		rv = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
 	if (rv == EXR_ERR_SUCCESS)
 		rv = exr_initialize_required_attr_simple(ctx, part, img->width, img->height,
 		                                         EXR_COMPRESSION_ZIP);
+	int y0 = hdr ? hdr->data_y : 0;    /* the data window's first row */
+	if (hdr && rv == EXR_ERR_SUCCESS)
+		rv = set_header(ctx, part, hdr, img->width, img->height);
 	/* pLinear 0 (perceptually logarithmic), as for linear light in OpenEXR's RGBA files */
 	static const char *const names[3] = { "R", "G", "B" };
 	for (int c = 0; c < 3 && rv == EXR_ERR_SUCCESS; c++)
@@ -144,7 +225,7 @@ int image_exr_write(const struct image *img, int fd, const char *path, bool floa
 
 	for (int y = 0; y < img->height && rv == EXR_ERR_SUCCESS; y += lines) {
 		exr_chunk_info_t chunk;
-		rv = exr_write_scanline_chunk_info(ctx, part, y, &chunk);
+		rv = exr_write_scanline_chunk_info(ctx, part, y0 + y, &chunk);
 		if (rv != EXR_ERR_SUCCESS)
 			break;
 		if (enc_started)
@@ -170,6 +251,11 @@ int image_exr_write(const struct image *img, int fd, const char *path, bool floa
 			ch->user_bytes_per_element = sizeof *buf;
 		}
 		rv = exr_encoding_choose_default_routines(ctx, part, &enc);
+		if (rv == EXR_ERR_SUCCESS && enc.compress_fn) {
+			library.run = enc.compress_fn;
+			enc.encoding_user_data = &library;
+			enc.compress_fn = compress_chunk;
+		}
 		if (rv == EXR_ERR_SUCCESS)
 			rv = exr_encoding_run(ctx, part, &enc);
 	}
@@ -293,8 +379,10 @@ static exr_result_t decode_chunk(exr_context_t ctx, const exr_chunk_info_t *chun
 	return exr_decoding_run(ctx, 0, dec);
 }
 
-/* The first part of the file is read, at full resolution (mipmap level 0). */
-int image_exr_read(int fd, const char *path, struct image **out, char *err, size_t errlen)
+/* The first part of the file is read, at full resolution (mipmap level 0), and with
+ * hdr its header. */
+int image_exr_read(int fd, const char *path, struct image **out, struct image_exr_header *hdr,
+                   char *err, size_t errlen)
 {
 	struct exr_io io = { .fd = fd };
 	exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -396,7 +484,11 @@ int image_exr_read(int fd, const char *path, struct image **out, char *err, size
 					rgb[i + c] = 0;
 		}
 	}
+	if (hdr && rv == EXR_ERR_SUCCESS && !what)
+		rv = get_header(ctx, &dw, hdr);
 done:
+	if (hdr && (rc != 0 || what || rv != EXR_ERR_SUCCESS))
+		image_exr_header_free(hdr);
 	free(scratch);
 	if (dec_started)
 		exr_decoding_destroy(ctx, &dec);

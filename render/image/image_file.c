@@ -38,7 +38,7 @@ int image_file_create(struct image_file *f, const char *path, const struct image
                       char *err, size_t errlen)
 {
 	*f = (struct image_file){ .path = path, .format = image_format_of(path), .fd = -1,
-	                          .opt = opt ? *opt : (struct image_write_options){ 8, false } };
+	                          .opt = opt ? *opt : (struct image_write_options){ .bit_depth = 8 } };
 	if (f->format < 0) {
 		snprintf(err, errlen, "cannot write '%s': unknown image format (use .png, .exr or .ppm)", path);
 		return EINVAL;
@@ -61,7 +61,7 @@ int image_file_commit(struct image_file *f, const struct image *img, char *err, 
 	else if (f->format == IMAGE_PNG)
 		rc = image_png_write(img, f->fd, f->path, f->opt.bit_depth, err, errlen);
 	else if (f->format == IMAGE_EXR)
-		rc = image_exr_write(img, f->fd, f->path, f->opt.float32, err, errlen);
+		rc = image_exr_write(img, f->fd, f->path, f->opt.float32, f->opt.exr, err, errlen);
 	else
 		rc = image_ppm_write(img, f->fd, f->path, f->opt.bit_depth, err, errlen);
 	rc = outfile_finish(f->fd, f->tmp, f->path, rc, err, errlen);
@@ -83,8 +83,9 @@ int image_read(const char *path, struct image **out, char *err, size_t errlen)
 	return image_read_with(path, NULL, out, err, errlen);
 }
 
-int image_read_with(const char *path, const struct image_read_options *opt, struct image **out,
-                    char *err, size_t errlen)
+/* image_read_with, and with h, image_read_exr_header. */
+static int read_file(const char *path, const struct image_read_options *opt, struct image_exr_header *h,
+                     struct image **out, char *err, size_t errlen)
 {
 	*out = NULL;
 	int fd = open(path, O_RDONLY | O_CLOEXEC);
@@ -113,10 +114,13 @@ int image_read_with(const char *path, const struct image_read_options *opt, stru
 	int rc;
 	if (errlen)
 		err[0] = '\0';
-	if (n >= 8 && memcmp(magic, png_magic, 8) == 0)
+	if (h && !(n >= 4 && memcmp(magic, exr_magic, 4) == 0)) {
+		snprintf(err, errlen, "cannot read '%s': not an OpenEXR file", path);
+		rc = EINVAL;
+	} else if (n >= 8 && memcmp(magic, png_magic, 8) == 0)
 		rc = image_png_read(fd, path, out, err, errlen);
 	else if (n >= 4 && memcmp(magic, exr_magic, 4) == 0)
-		rc = image_exr_read(fd, path, out, err, errlen);
+		rc = image_exr_read(fd, path, out, h, err, errlen);
 	else if (n >= 2 && magic[0] == 'P' && magic[1] == '6')
 		rc = image_ppm_read(fd, path, opt && opt->ppm_linear, out, err, errlen);
 	else {
@@ -130,4 +134,17 @@ int image_read_with(const char *path, const struct image_read_options *opt, stru
 		*out = NULL;
 	}
 	return rc;
+}
+
+int image_read_with(const char *path, const struct image_read_options *opt, struct image **out,
+                    char *err, size_t errlen)
+{
+	return read_file(path, opt, NULL, out, err, errlen);
+}
+
+int image_read_exr_header(const char *path, struct image **out, struct image_exr_header *h,
+                          char *err, size_t errlen)
+{
+	*h = (struct image_exr_header){ .nattrs = 0 };
+	return read_file(path, NULL, h, out, err, errlen);
 }

@@ -11,9 +11,24 @@
 /* The format named by path's extension (.png, .exr, .ppm in any case), or -1. */
 int image_format_of(const char *path);
 
+/* An OpenEXR file's place in a bigger image and the string attributes it carries
+ * beyond the pixels: a --tile part's (src/tile_part.h). */
+enum { IMAGE_EXR_ATTRS = 8 };
+struct image_exr_header {
+	int display[4];                /* the display window [x0, x1) x [y0, y1) */
+	int data_x, data_y;            /* the data window's top-left corner, in the display
+	                                * window's coordinates; its size is the image's */
+	int nattrs;
+	struct image_attr {
+		const char *name, *value;  /* read: malloc'd (image_exr_header_free) */
+	} attrs[IMAGE_EXR_ATTRS];
+};
+
 struct image_write_options {
 	int bit_depth;                 /* 8 or 16: PNG and PPM (EXR ignores it) */
 	bool float32;                  /* EXR: 32-bit float instead of half */
+	const struct image_exr_header *exr; /* EXR: its windows and attributes; NULL: the
+	                                * image is the whole display window, no attributes */
 };
 
 /* An image file being written: created before the image exists (image_file_create),
@@ -51,6 +66,15 @@ int image_write(const struct image *img, const char *path, const struct image_wr
  * readable image; EFBIG: too many pixels) with a message naming path in err; *out is
  * then NULL. */
 int image_read(const char *path, struct image **out, char *err, size_t errlen);
+
+/* image_read for an OpenEXR file, with its header in *h: the windows, and the string
+ * attributes whose names start with "scn" (the first IMAGE_EXR_ATTRS of them, in file
+ * order). Another format is refused (EINVAL). On success the caller frees the
+ * attributes with image_exr_header_free; on failure *h holds none. */
+int image_read_exr_header(const char *path, struct image **out, struct image_exr_header *h,
+                          char *err, size_t errlen);
+/* Frees the attributes image_read_exr_header copied into *h. (exr.c) */
+void image_exr_header_free(struct image_exr_header *h);
 
 /* What image_read_with may decide differently from image_read. */
 struct image_read_options {

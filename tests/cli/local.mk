@@ -21,3 +21,5 @@ TESTS += tests/cli/mesh_materials.sh
 EXTRA_DIST += tests/cli/mesh_materials.sh
 TESTS += tests/cli/mpi.sh
 EXTRA_DIST += tests/cli/mpi.sh
+TESTS += tests/cli/tile.sh
+EXTRA_DIST += tests/cli/tile.sh

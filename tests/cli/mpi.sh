@@ -69,6 +69,7 @@ same_as_one float.exr spheres.scn -s 4 --float
 same_as_one sixteen.png spheres.scn -s 4 --bit-depth 16
 same_as_one mesh.png mesh.scn -s 4
 same_as_one region.png spheres.scn -s 4 --region 5,3,61,37
+same_as_one part.exr spheres.scn -s 4 --tile 1/3
 # a tile of 16 x 16 pixels is the unit of work: an image of one tile, and of fewer tiles
 # than processes
 same_as_one tiny.png spheres.scn -s 4 -W 7 -H 5

@@ -38,7 +38,7 @@ expect_offers() {
 
 cd "$work" || exit 99
 expect_offers 'render' scn re
-expect_offers '--help --version -h check converge diff help pov render' scn ''
+expect_offers '--help --version -h check converge diff help merge pov render' scn ''
 expect_offers 'check converge' scn help c
 expect_offers '' scn help render ''
 expect_offers '--seed --stats' scn render --s

@@ -7,7 +7,7 @@
 # the seeds in the source tree are only read.
 set -eu
 
-: "${FUZZ_CC:=clang}" "${FUZZ_SECONDS:=60}" "${FUZZ_TARGETS:=scene mesh png exr}" "${FUZZ_OPTIONS:=}"
+: "${FUZZ_CC:=clang}" "${FUZZ_SECONDS:=60}" "${FUZZ_TARGETS:=scene mesh png exr part}" "${FUZZ_OPTIONS:=}"
 : "${FUZZ_SOURCES:?}" "${FUZZ_LIB_CFLAGS?}" "${FUZZ_LIBS:?}"
 top_srcdir=${top_srcdir:?} top_builddir=${top_builddir:?}
 # clang is needed for this target only, so it is installed here and not by README's
@@ -67,7 +67,7 @@ max_len() {
 	scene) echo 8192 ;;
 	mesh) echo 4096 ;;
 	png) echo 4096 ;;
-	exr) echo 8192 ;;
+	exr|part) echo 8192 ;;
 	esac
 }
 

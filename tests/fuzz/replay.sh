@@ -14,7 +14,7 @@ export TMPDIR
 ASAN_OPTIONS="max_allocation_size_mb=1024${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export ASAN_OPTIONS
 
-for h in scene mesh png exr; do
+for h in scene mesh png exr part; do
 	set -- "$SCN_SRCDIR/tests/fuzz/corpus/$h"/*
 	[ -f "$1" ] || { fail "no corpus for $h"; continue; }
 	[ -d "$SCN_SRCDIR/tests/fuzz/regress/$h" ] && set -- "$@" "$SCN_SRCDIR/tests/fuzz/regress/$h"/*

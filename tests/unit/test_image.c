@@ -192,7 +192,7 @@ static void test_srgb(void)
 static struct image *round_trip(const struct image *img, const char *name, int depth, bool f32)
 {
 	char err[512] = "";
-	struct image_write_options opt = { depth, f32 };
+	struct image_write_options opt = { .bit_depth = depth, .float32 = f32 };
 	int rc = image_write(img, tpath(name), &opt, err, sizeof err);
 	CHECK(rc == 0);
 	if (rc) {
@@ -326,7 +326,7 @@ static void test_reproducible(void)
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		char err[512];
-		struct image_write_options opt = { cases[i].depth, cases[i].f32 };
+		struct image_write_options opt = { .bit_depth = cases[i].depth, .float32 = cases[i].f32 };
 		CHECK(image_write(img, tpath(cases[i].a), &opt, err, sizeof err) == 0);
 		sleep(i == 0 ? 1 : 0);         /* a clock in the metadata would show */
 		CHECK(image_write(img, tpath(cases[i].b), &opt, err, sizeof err) == 0);
@@ -342,7 +342,7 @@ static void test_ppm_layout(void)
 {
 	struct image *img = test_image(6, 4, 3);
 	char err[512];
-	struct image_write_options o16 = { 16, false };
+	struct image_write_options o16 = { .bit_depth = 16, .float32 = false };
 	CHECK(image_write(img, tpath("lay8.ppm"), NULL, err, sizeof err) == 0);
 	CHECK(image_write(img, tpath("lay16.ppm"), &o16, err, sizeof err) == 0);
 	size_t n;
@@ -403,7 +403,7 @@ static void test_png_chunks(void)
 	struct image *img = test_image(9, 5, 11);
 	for (int depth = 8; depth <= 16; depth += 8) {
 		char err[512];
-		struct image_write_options opt = { depth, false };
+		struct image_write_options opt = { .bit_depth = depth, .float32 = false };
 		const char *path = tpath(depth == 8 ? "chunks8.png" : "chunks16.png");
 		CHECK(image_write(img, path, &opt, err, sizeof err) == 0);
 		size_t n;
@@ -801,7 +801,7 @@ static void test_corrupt(void)
 
 	/* files of each format, cut and damaged */
 	struct image *img = test_image(24, 20, 5);
-	struct image_write_options o16 = { 16, false }, of = { 8, true };
+	struct image_write_options o16 = { .bit_depth = 16, .float32 = false }, of = { .bit_depth = 8, .float32 = true };
 	CHECK(image_write(img, tpath("good.png"), NULL, err, sizeof err) == 0);
 	CHECK(image_write(img, tpath("good16.png"), &o16, err, sizeof err) == 0);
 	CHECK(image_write(img, tpath("good.exr"), NULL, err, sizeof err) == 0);
@@ -895,7 +895,7 @@ static void test_atomic(void)
 	/* options and extensions */
 	CHECK(image_write(img, tpath("x.tga"), NULL, err, sizeof err) == EINVAL);
 	CHECK(strstr(err, "unknown image format") != NULL);
-	struct image_write_options bad = { 12, false };
+	struct image_write_options bad = { .bit_depth = 12, .float32 = false };
 	CHECK(image_write(img, tpath("x.png"), &bad, err, sizeof err) == EINVAL);
 	CHECK(strstr(err, "bit depth 12") != NULL);
 	CHECK(count_entries() == before);
@@ -913,7 +913,7 @@ static void test_atomic(void)
 		spit(p, old, sizeof old);
 		before = count_entries();
 		CHECK(setrlimit(RLIMIT_FSIZE, &small) == 0);
-		struct image_write_options opt = { 16, true };
+		struct image_write_options opt = { .bit_depth = 16, .float32 = true };
 		int rc = image_write(img, p, &opt, err, sizeof err);
 		CHECK(setrlimit(RLIMIT_FSIZE, &saved) == 0);
 		if (rc != EFBIG)
