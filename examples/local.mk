@@ -21,3 +21,7 @@ EXAMPLES += examples/textures.scn examples/crate-texture.scn
 EXTRA_DIST += examples/textures.png examples/picture.png examples/crate.obj examples/crate.mtl examples/crate.png
 EXAMPLES += examples/still_life.scn
 EXTRA_DIST += examples/still_life.png
+# scn over a cluster: Slurm job arrays and GNU parallel (parts and scn merge), MPI with
+# srun; tests/cli/cluster.sh runs each against stand-ins
+EXTRA_DIST += examples/cluster/part.sbatch examples/cluster/render-frame.sh examples/cluster/parallel.sh \
+	examples/cluster/mpi.sbatch

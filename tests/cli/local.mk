@@ -23,3 +23,5 @@ TESTS += tests/cli/mpi.sh
 EXTRA_DIST += tests/cli/mpi.sh
 TESTS += tests/cli/tile.sh
 EXTRA_DIST += tests/cli/tile.sh
+TESTS += tests/cli/cluster.sh
+EXTRA_DIST += tests/cli/cluster.sh
