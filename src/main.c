@@ -51,6 +51,8 @@ static const struct command commands[] = {
 	  "shown, a later frame's diagnostics only when it fails; a failure names its frame and\n"
 	  "ends the run. --progress counts frames, --stats is per frame. SCENE is read for each\n"
 	  "frame, so it cannot be '-'. --tile renders one image: render one frame per task instead.\n"
+	  "Under an MPI launcher (mpirun -np N scn render ...), the processes share the image's\n"
+	  "tiles, or whole frames, and process 0 writes the same bytes as one process ('man scn', MPI).\n"
 	  "Exit status: 0 success, 1 errors in the scene, 2 bad command line, 3 a file could not\n"
 	  "be read or written, 4 the render failed.\n",
 	  cmd_render },

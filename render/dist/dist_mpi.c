@@ -29,9 +29,7 @@ enum { TAG_ASK = 1, TAG_GRANT, TAG_TILES, TAG_DONE, TAG_FRAME, TAG_FRAME_TEXT, T
 
 /* Between polls of a waiting main thread, 1 ms: short against the work each process holds
  * in hand (LOW_PER_THREAD tiles a thread, a millisecond or more each), and long enough
- * that polling takes nothing measurable from the render threads (at 0.25 ms, with the
- * asks a quarter this size, the headline on 2 processes of 1 thread took 22% longer
- * than on 1 process of 2 threads, the second process getting 39% of the tiles). */
+ * that polling takes nothing measurable from the render threads. */
 static void pause_briefly(void)
 {
 	nanosleep(&(struct timespec){ 0, 1000 * 1000 }, NULL);
@@ -201,9 +199,13 @@ static void chunk_done(void *ctx, int t)
 }
 
 /* How many tiles a process asks for at a time, ASK_PER_THREAD per thread; it asks again
- * when LOW_PER_THREAD per thread are left, so that its threads do not wait for the
- * answer even when process 0's main thread must wait for a core to send it. */
-enum { ASK_PER_THREAD = 8, LOW_PER_THREAD = 4 };
+ * when LOW_PER_THREAD per thread are left, so that its threads do not run dry while the
+ * answer comes, which takes a poll on each side and, on a machine whose cores are all
+ * rendering, the wait for a core to run process 0's main thread. On the headline (2
+ * processes of 1 thread on 2 cores, tiles of about 1 ms), process 1 got 39% of the
+ * tiles with 2 and 1 (and polls every 0.25 ms), 36-40% with 8 and 4, 44-46% with 16 and
+ * 8; the cost is a tail of at most ASK_PER_THREAD tiles a thread. */
+enum { ASK_PER_THREAD = 16, LOW_PER_THREAD = 8 };
 static int ask_size(int threads)
 {
 	return ASK_PER_THREAD * threads;
@@ -291,6 +293,7 @@ struct server {
 	int ntiles, next;              /* the queue: tiles next .. ntiles - 1 are left */
 	int remote_done;               /* tiles done by the others */
 	int working;                   /* other processes that have not sent their counts */
+	int processes;
 	struct ray_stats others;
 	struct dist_traffic traffic;
 };
@@ -304,9 +307,16 @@ static float *image_tile(void *ctx, int t, size_t *stride)
 	return &s->img->rgb[3 * ((size_t)(y - s->opt->y0) * (size_t)s->img->width + (size_t)(x - s->opt->x0))];
 }
 
+/* Takes up to want tiles from the queue for one process, but no more than a share of
+ * what is left, 1 / (2 * processes) of it (guided self-scheduling), so that as the queue
+ * empties the grants shrink and no process is left with a long tail of tiles while the
+ * others have finished. */
 static int take(struct server *s, int want)
 {
-	int left = s->ntiles - s->next, n = want < left ? want : left;
+	int left = s->ntiles - s->next, share = left / (2 * s->processes);
+	int n = want < share ? want : share > 0 ? share : 1;
+	if (n > left)
+		n = left;
 	s->next += n;
 	return n;
 }
@@ -363,7 +373,8 @@ static bool serve(struct server *s)
 static int render_served(const struct dist_world *w, const struct scene *sc, const struct render_options *opt,
                          struct image *img, struct ray_stats *st, struct dist_traffic *traffic)
 {
-	struct server s = { .opt = opt, .img = img, .ntiles = render_tile_count(opt), .working = w->size - 1 };
+	struct server s = { .opt = opt, .img = img, .ntiles = render_tile_count(opt), .working = w->size - 1,
+	                    .processes = w->size };
 	s.pool = render_pool_start(sc, opt, &(struct render_sink){ image_tile, NULL, &s });
 	if (!s.pool) {
 		fprintf(stderr, "scn: error: cannot start the render threads\n");
