@@ -30,7 +30,15 @@ wait_for() {
 	return 1
 }
 
-has_temp() { ls -a "$1" | grep -q '\.tmp$'; }
+# has_temp DIR PID: PID's output file in DIR is open: a named temporary file there, or
+# (outfile.c) one without a name, which only PID's descriptors show, as "DIR/#N (deleted)"
+has_temp() {
+	ls -a "$1" | grep -q '\.tmp$' && return 0
+	for fd in /proc/"$2"/fd/*; do
+		case $(readlink "$fd" 2>/dev/null) in "$(pwd -P)/$1/#"*) return 0 ;; esac
+	done
+	return 1
+}
 
 # stopped PID: waits for PID (up to 30 s, then kills it); its exit status in $status
 stopped() {
@@ -48,7 +56,7 @@ interrupt_render() {
 	# a background job of a script ignores SIGINT: give the render the default action back
 	env --default-signal="$1" "$SCN" render slow.scn -j 2 -q -o out/keep.png 2>"$work/err-$1" &
 	pid=$!
-	wait_for has_temp out || fail "$1: no temporary file appeared in out/"
+	wait_for has_temp out "$pid" || fail "$1: no temporary file appeared in out/"
 	kill -"$1" "$pid"
 	stopped "$pid"
 	want=$((128 + $(kill -l "$1")))
@@ -68,7 +76,7 @@ if [ "$SCN_SANITIZED" != yes ]; then
 	echo old >out/keep.png
 	"$SCN" render slow.scn -j 2 -q -o out/keep.png 2>"$work/err-SEGV" &
 	pid=$!
-	wait_for has_temp out || fail "SEGV: no temporary file appeared in out/"
+	wait_for has_temp out "$pid" || fail "SEGV: no temporary file appeared in out/"
 	kill -SEGV "$pid"
 	stopped "$pid"
 	[ "$status" -eq $((128 + $(kill -l SEGV))) ] || fail "render crashed by SIGSEGV exited $status"
