@@ -331,25 +331,24 @@ void render_pool_finish(struct render_pool *p, const struct ray_stats *more, str
 	free(p);
 }
 
-/* render_image's sink: the tiles go straight into the image. */
-struct image_sink {
-	const struct render_options *opt;
-	struct image *img;
-};
-
-static float *image_pixels(void *ctx, int t, size_t *stride)
+float *render_image_pixels(void *ctx, int t, size_t *stride)
 {
-	struct image_sink *s = ctx;
+	const struct render_target *s = ctx;
 	int x, y, w, h;
 	render_tile_rect(s->opt, t, &x, &y, &w, &h);
 	*stride = 3 * (size_t)s->img->width;
 	return &s->img->rgb[3 * ((size_t)(y - s->opt->y0) * (size_t)s->img->width + (size_t)(x - s->opt->x0))];
 }
 
+int render_pool_threads(const struct render_pool *p)
+{
+	return p->started;
+}
+
 int render_image(const struct scene *sc, const struct render_options *opt, struct image *img, struct ray_stats *st)
 {
-	struct image_sink is = { opt, img };
-	struct render_pool *p = render_pool_start(sc, opt, &(struct render_sink){ image_pixels, NULL, &is });
+	struct render_target target = { opt, img };
+	struct render_pool *p = render_pool_start(sc, opt, &(struct render_sink){ render_image_pixels, NULL, &target });
 	if (!p)
 		return -1;
 	int ntiles = render_tile_count(opt);

@@ -42,6 +42,14 @@ struct render_sink {
 	void *ctx;
 };
 
+/* The sink that puts each tile in its place in img, an image of opt's rectangle: ctx is
+ * a struct render_target. */
+struct render_target {
+	const struct render_options *opt;
+	struct image *img;
+};
+float *render_image_pixels(void *ctx, int t, size_t *stride);
+
 /* Worker threads that render the tiles they are fed, in the order fed; an idle worker
  * waits for more until the pool is closed. No lock is held while a tile renders. */
 struct render_pool;
@@ -53,6 +61,8 @@ struct render_pool *render_pool_start(const struct scene *sc, const struct rende
 void render_pool_feed(struct render_pool *p, int first, int count);
 /* No more tiles will be fed: the workers end once those fed are done. */
 void render_pool_close(struct render_pool *p);
+/* How many worker threads it has. */
+int render_pool_threads(const struct render_pool *p);
 /* How many tiles are done. */
 int render_pool_done(struct render_pool *p);
 /* Per tile, the sum over its probe pixels of the squared difference of two replicas

@@ -14,6 +14,7 @@
 /* This process's place among the processes of the run: rank 0 of 1 outside a launcher. */
 struct dist_world {
 	int rank, size;
+	char host[64];                 /* this machine's name, for messages (under a launcher) */
 };
 
 /* Starts the run of `scn render` given main's argc and argv. Outside a launcher: a world

@@ -39,19 +39,19 @@ int dist_start(int argc, char **argv, struct dist_world *w)
 {
 	(void)argc;
 	(void)argv;
-	*w = (struct dist_world){ 0, 1 };
+	*w = (struct dist_world){ 0, 1, "" };
 	if (!dist_launcher())
 		return 0;
+	gethostname(w->host, sizeof w->host - 1);
 	int provided;
 	if (MPI_Init_thread(NULL, NULL, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
 		fprintf(stderr, "scn: error: MPI did not start\n");
-		return 4;
+		return 4; /* main.c's status for a render that failed */
 	}
 	MPI_Comm_rank(MPI_COMM_WORLD, &w->rank);
 	MPI_Comm_size(MPI_COMM_WORLD, &w->size);
-	char host[64] = "", name[128];
-	gethostname(host, sizeof host - 1);
-	snprintf(name, sizeof name, "process %d of %d (on %s): ", w->rank, w->size, host);
+	char name[128];
+	snprintf(name, sizeof name, "process %d of %d (on %s): ", w->rank, w->size, w->host);
 	cleanup_name_process(name);
 	if (provided < MPI_THREAD_FUNNELED) {
 		if (w->rank == 0)
@@ -84,13 +84,11 @@ int dist_agree(const struct dist_world *w, int status, const char *messages)
 	 * process 0 to print when it did not fail itself */
 	char *mine = NULL;
 	if (status && w->rank != 0) {
-		char host[256] = "";
-		gethostname(host, sizeof host - 1);
 		const char *m = messages ? messages : "";
-		size_t size = strlen(m) + sizeof host + 128;
+		size_t size = strlen(m) + sizeof w->host + 128;
 		mine = xmalloc(size);
 		snprintf(mine, size, "scn: error: process %d of %d (on %s) failed where process 0 did not:\n%s", w->rank,
-		         w->size, host, m);
+		         w->size, w->host, m);
 	}
 	int len = mine ? (int)strlen(mine) : 0;
 	int *lens = w->rank == 0 ? xmalloc((size_t)w->size * sizeof *lens) : NULL;
@@ -211,12 +209,6 @@ static int ask_size(int threads)
 	return ASK_PER_THREAD * threads;
 }
 
-static int thread_count(const struct render_options *opt)
-{
-	int n = opt->threads > 0 ? opt->threads : (int)sysconf(_SC_NPROCESSORS_ONLN);
-	return n < 1 ? 1 : n;
-}
-
 /* A process other than 0: asks for tiles, renders them, sends them back, and at the end
  * its ray counts. */
 static int render_share(const struct scene *sc, const struct render_options *opt, struct ray_stats *st)
@@ -228,7 +220,7 @@ static int render_share(const struct scene *sc, const struct render_options *opt
 		fprintf(stderr, "scn: error: cannot start the render threads\n");
 		MPI_Abort(MPI_COMM_WORLD, 4);
 	}
-	int threads = thread_count(opt), want = ask_size(threads), grant[2];
+	int threads = render_pool_threads(pool), want = ask_size(threads), grant[2];
 	int fed = 0;                      /* tiles fed to the pool */
 	bool asking = false, no_more = false;
 	MPI_Request req = MPI_REQUEST_NULL;
@@ -288,7 +280,7 @@ static int render_share(const struct scene *sc, const struct render_options *opt
  * tiles copied into the image as they come. */
 struct server {
 	const struct render_options *opt;
-	struct image *img;
+	struct render_target target;   /* the image */
 	struct render_pool *pool;
 	int ntiles, next;              /* the queue: tiles next .. ntiles - 1 are left */
 	int remote_done;               /* tiles done by the others */
@@ -297,15 +289,6 @@ struct server {
 	struct ray_stats others;
 	struct dist_traffic traffic;
 };
-
-static float *image_tile(void *ctx, int t, size_t *stride)
-{
-	struct server *s = ctx;
-	int x, y, w, h;
-	render_tile_rect(s->opt, t, &x, &y, &w, &h);
-	*stride = 3 * (size_t)s->img->width;
-	return &s->img->rgb[3 * ((size_t)(y - s->opt->y0) * (size_t)s->img->width + (size_t)(x - s->opt->x0))];
-}
 
 /* Takes up to want tiles from the queue for one process, but no more than a share of
  * what is left, 1 / (2 * processes) of it (guided self-scheduling), so that as the queue
@@ -350,7 +333,7 @@ static bool serve(struct server *s)
 			int t = h->first + i, x, y, w, hh;
 			render_tile_rect(s->opt, t, &x, &y, &w, &hh);
 			size_t stride;
-			float *to = image_tile(s, t, &stride);
+			float *to = render_image_pixels(&s->target, t, &stride);
 			for (int row = 0; row < hh; row++, px += 3 * w)
 				memcpy(to + row * stride, px, 3 * (size_t)w * sizeof *px);
 			tile_probes[t] = probes[i];
@@ -373,14 +356,14 @@ static bool serve(struct server *s)
 static int render_served(const struct dist_world *w, const struct scene *sc, const struct render_options *opt,
                          struct image *img, struct ray_stats *st, struct dist_traffic *traffic)
 {
-	struct server s = { .opt = opt, .img = img, .ntiles = render_tile_count(opt), .working = w->size - 1,
+	struct server s = { .opt = opt, .target = { opt, img }, .ntiles = render_tile_count(opt), .working = w->size - 1,
 	                    .processes = w->size };
-	s.pool = render_pool_start(sc, opt, &(struct render_sink){ image_tile, NULL, &s });
+	s.pool = render_pool_start(sc, opt, &(struct render_sink){ render_image_pixels, NULL, &s.target });
 	if (!s.pool) {
 		fprintf(stderr, "scn: error: cannot start the render threads\n");
 		MPI_Abort(MPI_COMM_WORLD, 4);
 	}
-	int threads = thread_count(opt), fed = 0;
+	int threads = render_pool_threads(s.pool), fed = 0;
 	bool closed = false;
 	double t0 = clock_now(), shown = t0;
 	for (;;) {

@@ -32,7 +32,7 @@ static void exec_scn_mpi(char **argv)
 int dist_start(int argc, char **argv, struct dist_world *w)
 {
 	(void)argc;
-	*w = (struct dist_world){ 0, 1 };
+	*w = (struct dist_world){ 0, 1, "" };
 	const char *by = dist_launcher();
 	if (!by)
 		return 0;
