@@ -228,14 +228,16 @@ struct tile_job {
 /* --tile: narrows ro, the output rectangle, to the part's rows, with the whole's pixel
  * count for the probes, and names the part's origin in *part from s (the scene after the
  * overrides). Returns the exit status after the message: a usage error when there are
- * more parts than rows, EXIT_IO when a file the scene reads cannot be read. */
+ * more parts than rows (said only where speaks: process 0), EXIT_IO in d when a file
+ * the scene reads cannot be read. */
 static int start_part(const struct command *self, const struct render_args *a, const struct scene_desc *s,
-                      struct render_options *ro, struct tile_job *part)
+                      struct render_options *ro, struct tile_job *part, struct diag *d, bool speaks)
 {
 	int w = ro->x1 - ro->x0, h = ro->y1 - ro->y0;
-	if (a->tile.n > h)
-		return cli_usage_error(self, "--tile %ld/%ld: %ld parts are more than the %d rows of the image", a->tile.k,
-		                       a->tile.n, a->tile.n, h);
+	if (a->tile.n > h) /* the same on every process: process 0 alone says it */
+		return speaks ? cli_usage_error(self, "--tile %ld/%ld: %ld parts are more than the %d rows of the image",
+		                                a->tile.k, a->tile.n, a->tile.n, h)
+		              : EXIT_USAGE;
 	ro->whole_pixels = (int64_t)w * h;
 	tile_band(a->tile.k, a->tile.n, ro->y0, h, &ro->y0, &ro->y1);
 	part->settings = tile_settings(s, a->region ? (const long[4]){ a->x0, a->y0, a->x1, a->y1 } : NULL,
@@ -244,7 +246,7 @@ static int start_part(const struct command *self, const struct render_args *a, c
 	char err[512];
 	int e = tile_scene_hash(s, part->settings, part->scene, err, sizeof err);
 	if (e) {
-		fprintf(stderr, "scn: %s\n", err);
+		diag_plain(d, DIAG_ERROR, "%s", err);
 		return cli_file_status(e);
 	}
 	return 0;
@@ -320,7 +322,8 @@ static void print_stats(FILE *out, const struct prepared *p, double render_s, do
 
 /* Loads the scene at moment at, applies the overrides, lowers and builds, with the
  * diagnostics in d; the image's memory is counted against the machine's only where it
- * is made (process 0). Returns the exit status. */
+ * is made (makes_image: process 0, which alone prints a usage error). Returns the exit
+ * status. */
 static int prepare(const struct command *self, const struct render_args *a, const struct load_frame *at,
                    bool makes_image, struct diag *d, struct prepared *p)
 {
@@ -335,7 +338,7 @@ static int prepare(const struct command *self, const struct render_args *a, cons
 		if (a->region)
 			ro->x0 = (int)a->x0, ro->y0 = (int)a->y0, ro->x1 = (int)a->x1, ro->y1 = (int)a->y1;
 		if (a->tile.n)
-			rc = start_part(self, a, &desc, ro, &p->part);
+			rc = start_part(self, a, &desc, ro, &p->part, d, makes_image);
 	}
 	if (rc == 0 && makes_image)
 		rc = image_fits(a, &desc, d, ro->x1 - ro->x0, ro->y1 - ro->y0);

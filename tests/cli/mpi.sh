@@ -105,6 +105,10 @@ expect_status 1 mpi 3 render bad.scn -o bad.png
 [ -e bad.png ] && fail "a failed render wrote bad.png"
 expect_status 2 mpi 3 render spheres.scn --bogus
 [ "$(grep -c "^scn: unknown option '--bogus' for render" "$work/err")" = 1 ] || { fail "the usage error once"; cat "$work/err"; }
+# a usage error found once the scene is read: once too
+expect_status 2 mpi 3 render spheres.scn --tile 1/50 -o p.exr
+[ "$(grep -c "^scn: --tile 1/50: 50 parts are more than the 40 rows of the image$" "$work/err")" = 1 ] ||
+	{ fail "the late usage error once"; cat "$work/err"; }
 # a process that fails where process 0 does not (here its own folder's scene names a mesh
 # that is not there): process 0 prints its messages under a line naming it, and writes nothing
 mkdir d0 d1

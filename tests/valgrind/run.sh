@@ -2,8 +2,9 @@
 # memcheck: front-end errors, the parse of every kind of statement, a small render of
 # every example (each feature, PNG sky, PLY mesh), OBJ and inline meshes, a model of each
 # mesh format that the man page lists (from assimp-testmodels, where installed), the three
-# image formats written and read back, scn pov, scn diff and a short scn converge. Each
-# run must end with its usual status, no memcheck error and no byte definitely lost.
+# image formats written and read back, --tile parts and scn merge, scn pov, scn diff and a
+# short scn converge. Each run must end with its usual status, no memcheck error and no
+# byte definitely lost.
 # Prints one line a run and a summary; exit status 0 when every run passed, 77 when
 # valgrind is missing or scn is a sanitizer build, 1 otherwise.
 set -u
@@ -88,6 +89,12 @@ vg 0 diff w.exr w16.ppm --heatmap heat.png
 vg 0 diff w32.exr w.exr --heatmap heat.exr
 vg 0 diff wp.png whitted.png --heatmap heat.ppm
 vg 1 diff w.exr w16.ppm --max-error 0
+# parts of --tile (with a mesh and an image map, which the part's hash reads) and scn merge,
+# and merge's refusal of a part given twice
+vg 0 render "$src/examples/crate-texture.scn" -W 32 -H 24 -s 4 -q --tile 0/2 -o part0.exr
+vg 0 render "$src/examples/crate-texture.scn" -W 32 -H 24 -s 4 -q --tile 1/2 -o part1.exr
+vg 0 merge part1.exr part0.exr -o merged.png
+vg 3 merge part0.exr part0.exr -o twice.png
 # the POV-Ray twin, and the error against time without POV-Ray
 vg 0 pov "$src/examples/materials.scn" -o materials.pov
 vg 0 converge "$src/examples/whitted.scn" -W 12 -H 9 --reference-samples 16 --budget 5 --no-pov -q
