@@ -320,16 +320,19 @@ static void print_stats(FILE *out, const struct prepared *p, double render_s, do
 		        traffic->bytes, traffic->tiles ? traffic->bytes / (double)traffic->tiles : 0.0, traffic->gather_s);
 }
 
-/* Loads the scene at moment at, applies the overrides, lowers and builds, with the
- * diagnostics in d; the image's memory is counted against the machine's only where it
- * is made (makes_image: process 0, which alone prints a usage error). Returns the exit
- * status. */
+/* Loads the scene at moment at, applies the overrides, lowers and builds. The
+ * diagnostics go to to, all printed before the build (drop_warnings: the errors alone);
+ * the image's memory is counted against the machine's only where it is made
+ * (makes_image: process 0, which alone prints a usage error). Returns the exit status. */
 static int prepare(const struct command *self, const struct render_args *a, const struct load_frame *at,
-                   bool makes_image, struct diag *d, struct prepared *p)
+                   bool makes_image, FILE *to, bool drop_warnings, struct prepared *p)
 {
+	struct diag d;
+	diag_init(&d, to);
+	struct diag_mark start = diag_mark(&d);
 	struct scene_desc desc;
 	*p = (struct prepared){ .ro = { .threads = (int)a->threads } };
-	int rc = (int)load_scene(d, a->scene, at, &desc, &p->lt);
+	int rc = (int)load_scene(&d, a->scene, at, &desc, &p->lt);
 	struct render_options *ro = &p->ro;
 	if (rc == 0)
 		rc = override(self, a, &desc);
@@ -338,14 +341,18 @@ static int prepare(const struct command *self, const struct render_args *a, cons
 		if (a->region)
 			ro->x0 = (int)a->x0, ro->y0 = (int)a->y0, ro->x1 = (int)a->x1, ro->y1 = (int)a->y1;
 		if (a->tile.n)
-			rc = start_part(self, a, &desc, ro, &p->part, d, makes_image);
+			rc = start_part(self, a, &desc, ro, &p->part, &d, makes_image);
 	}
 	if (rc == 0 && makes_image)
-		rc = image_fits(a, &desc, d, ro->x1 - ro->x0, ro->y1 - ro->y0);
+		rc = image_fits(a, &desc, &d, ro->x1 - ro->x0, ro->y1 - ro->y0);
 	int64_t image = makes_image ? (int64_t)image_bytes(ro->x1 - ro->x0, ro->y1 - ro->y0) : 0;
 	if (rc == 0)
-		rc = (int)lower_scene(d, &desc, &p->sc, &p->wt, image);
+		rc = (int)lower_scene(&d, &desc, &p->sc, &p->wt, image);
 	scene_desc_free(&desc); /* lowered: its memory goes to the BVH */
+	/* nothing is printed before this, so the warnings can still go */
+	if (drop_warnings && d.errors == 0)
+		diag_rewind(&d, start);
+	diag_fini(&d);
 	if (rc == 0) {
 		double t0 = clock_now();
 		accel_build(&p->sc.accel, &p->sc.geo, a->accel);
@@ -428,19 +435,10 @@ static int render_shot(const struct command *self, const struct render_args *a, 
 	char *kept = NULL;
 	size_t kept_size = 0;
 	FILE *to = writer ? stderr : open_memstream(&kept, &kept_size);
-	struct diag d;
-	diag_init(&d, to ? to : stderr);
-	struct diag_mark start = diag_mark(&d);
-	struct prepared p;
+	struct prepared p = { 0 };
 	struct image *img = NULL;
 	if (rc == 0)
-		rc = prepare(self, a, &s->at, writer, &d, &p);
-	else
-		p = (struct prepared){ 0 };
-	/* nothing is printed before the flush, so the warnings can still go */
-	if ((s->drop_warnings || !writer) && d.errors == 0)
-		diag_rewind(&d, start);
-	diag_fini(&d); /* it prints what is left, and the stream is closed after */
+		rc = prepare(self, a, &s->at, writer, to ? to : stderr, s->drop_warnings || !writer, &p);
 	if (!writer && to)
 		fclose(to);
 	if (rc == 0 && writer && !(img = new_image(&p)))
@@ -591,15 +589,9 @@ static int spread_render(void *ctx, long k, struct dist_frame *out)
 	*out = (struct dist_frame){ .k = k, .rmse = -1 };
 	size_t size;
 	FILE *to = open_memstream(&out->messages, &size);
-	struct diag d;
-	diag_init(&d, to ? to : stderr);
-	struct diag_mark start = diag_mark(&d);
 	struct prepared p;
 	struct load_frame at = { anim_clock(&a->frames, k), k };
-	int rc = prepare(sp->self, a, &at, true, &d, &p);
-	if (k > a->frames.first && d.errors == 0)
-		diag_rewind(&d, start);
-	diag_fini(&d); /* it prints what is left, and the stream is closed after */
+	int rc = prepare(sp->self, a, &at, true, to ? to : stderr, k > a->frames.first, &p);
 	if (rc == 0 && !(out->img = new_image(&p)))
 		rc = EXIT_RENDER;
 	if (rc == 0) {
