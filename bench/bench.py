@@ -130,8 +130,10 @@ def median_run(runs):
 def make_scenes(work):
     """[(name, description, scene path)]: the five scenes of the issue, the solids of
     LANGUAGE.md section 9 (10^4 quadrics and tori, a wall of 1000 CSG bricks), the macros
-    of section 10 (a tree of 40958 objects from a macro that calls itself) and the surfaces
-    of section 11 (the headline's spheres, textured)."""
+    of section 10 (a tree of 40958 objects from a macro that calls itself), the surfaces
+    of section 11 (the headline's spheres, textured), the lights and cameras of section 12,
+    and issue 24's spheres of a material each, a third mirror and a third glass (the
+    headline's 1000, and 10^5 in a box)."""
     bunny_ply = os.path.join(TOP, "examples", "bunny.ply")
     big_ply = os.path.join(work, "bunny-1m.ply")
     log("bench: writing scenes into", work)
@@ -150,6 +152,8 @@ def make_scenes(work):
     scenes.fog(os.path.join(work, "fog.scn"))
     scenes.orthographic(os.path.join(work, "orthographic.scn"))
     scenes.focal_blur(os.path.join(work, "focal-blur.scn"))
+    scenes.mirrors(os.path.join(work, "mirrors.scn"))
+    scenes.dense_mirrors(os.path.join(work, "dense-mirrors.scn"))
     return [("headline", "1000 spheres, mirror+glass, 2 lights", "headline.scn"),
             ("spheres 1e5", "100000 spheres, 1 light", "spheres-1e5.scn"),
             ("spheres 1e6", "1000000 spheres, 1 light", "spheres-1e6.scn"),
@@ -167,7 +171,11 @@ def make_scenes(work):
             ("fog", "the headline with fog (distance 18)", "fog.scn"),
             ("orthographic", "the headline's spheres from above through an orthographic camera", "orthographic.scn"),
             ("focal blur", "the headline through a lens (aperture 0.6; POV-Ray: blur_samples 5 and -A, 5 rays "
-             "a pixel as scn's 5 samples)", "focal-blur.scn")]
+             "a pixel as scn's 5 samples)", "focal-blur.scn"),
+            ("mirrors", "the headline's 1000 spheres, each its own material, a third mirror, a third glass",
+             "mirrors.scn"),
+            ("dense mirrors", "100000 spheres in a box, each its own material, a third mirror, a third glass, "
+             "max_depth 8", "dense-mirrors.scn")]
 
 
 def scene_settings(path):

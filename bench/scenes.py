@@ -154,6 +154,60 @@ def field(path, n, width=640, height=480):
                              loops=sphere_loops(n, ["red", "green", "blue", "sand"], centre, repr(r))))
 
 
+# Spheres with a material of their own each, a third mirror, a third glass and a third
+# diffuse, their colours, reflection and index from rand() (LANGUAGE.md section 5's
+# inline material): the mix of mirrors and glass at which scn's margin over POV-Ray is
+# smallest (issue 24's first measurement)
+OWN_MATERIALS = (
+    "diffuse <0.05 + 0.1 * rand({k}), 0.05 + 0.1 * rand({k} + 1), 0.05 + 0.1 * rand({k} + 2)>  specular 0.8"
+    "  shininess 200  reflect 0.7 + 0.25 * rand({k} + 3)",
+    "diffuse 0  specular 0.6  shininess 300  reflect 0.05 + 0.1 * rand({k} + 3)  transmit 0.8 + 0.15 * rand({k} + 4)"
+    "  ior 1.3 + 0.4 * rand({k} + 5)",
+    "diffuse <0.2 + 0.7 * rand({k}), 0.2 + 0.7 * rand({k} + 1), 0.2 + 0.7 * rand({k} + 2)>  specular 0.3"
+    "  shininess 40")
+
+OWN = """// {what}
+{camera}
+light  {{ position <-10, 14, -8> }}
+light  {{ position <12, 10, -4>  intensity 0.6 }}
+skybox {{ zenith <0.15, 0.3, 0.7>  horizon <0.75, 0.82, 0.9> }}
+samples {{ count 5  pattern jittered }}
+max_depth 8
+material floor  {{ diffuse checker(<0.9, 0.9, 0.9>, <0.25, 0.25, 0.3>, 1)  reflect 0.1 }}
+plane {{ <0, 1, 0>, 0  material floor }}
+{loops}"""
+
+
+def own_material_loops(n, centre, radius):
+    out, first = [], 0
+    for m, material in enumerate(OWN_MATERIALS):
+        count = n // 3 + (1 if m < n % 3 else 0)
+        k = f"(i + {first})"
+        out.append(f"for i in 0 .. {count} {{ sphere {{ {centre.format(k=k)}, {radius.format(k=k)}"
+                   f"  material {{ {material.format(k='11 * ' + k)} }} }} }}\n")
+        first += count
+    return "".join(out)
+
+
+def mirrors(path):
+    """The headline's 1000 spheres and floor at 1280x1024, each sphere with a material of
+    its own, a third mirror and a third glass."""
+    write(path, OWN.format(what="mirrors: the headline's 1000 spheres, each its own material, a third mirror, a third glass",
+                           camera=HEADLINE_SETUP.splitlines()[0].replace("{{", "{").replace("}}", "}"),
+                           loops=own_material_loops(1000, HEADLINE_CENTRE, HEADLINE_RADIUS)))
+
+
+def dense_mirrors(path, n=100000):
+    """n spheres of their own materials (as mirrors) in the field's box, 640x480, max_depth 8."""
+    s, share = 10.0, 0.03
+    r = (share * (2 * s) ** 3 * 3 / (4 * 3.141592653589793 * n)) ** (1 / 3)
+    centre = f"<{2 * s} * rand(3 * {{k}}) - {s}, {2 * s} * rand(3 * {{k}} + 1), {2 * s} * rand(3 * {{k}} + 2) - {s}>"
+    camera = (f"camera {{ location <0, {1.6 * s:g}, {-3.2 * s:g}>  look_at <0, {s:g}, 0>  fov 55  "
+              f"resolution 640, 480 }}")
+    write(path, OWN.format(what=f"dense mirrors: {n} spheres in a box, each its own material, a third mirror, a third glass",
+                           camera=camera, loops=own_material_loops(n, centre, repr(r))))
+
+
 QUADRICS = """// {n} quadrics and tori at random over a floor: boxes, cylinders, cones, ellipsoids
 // (spheres under an uneven scale) and tori, a fifth of each, each turned at random
 camera {{ location <0, 9, -24>  look_at <0, 1, 0>  fov 60  resolution {w}, {h} }}
