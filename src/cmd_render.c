@@ -747,7 +747,7 @@ int cmd_render(const struct command *self, int argc, char **argv)
 	memcpy(all + 1, argv, (size_t)argc * sizeof *argv);
 	all[argc + 1] = NULL;
 	struct dist_world w;
-	int rc = dist_start(argc + 1, all, &w);
+	int rc = dist_start(all, &w);
 	free(all);
 	if (rc)
 		return rc;

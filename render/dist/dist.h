@@ -17,11 +17,12 @@ struct dist_world {
 	char host[64];                 /* this machine's name, for messages (under a launcher) */
 };
 
-/* Starts the run of `scn render` given main's argc and argv. Outside a launcher: a world
- * of one, and MPI is not touched. Under one (Open MPI's mpirun, Slurm's srun): scn execs
- * scn-mpi with the same arguments (next to scn, or in PKGLIBEXECDIR), and scn-mpi starts
- * MPI. Returns 0, or an exit status after a message (an MPI launcher but no scn-mpi). */
-int dist_start(int argc, char **argv, struct dist_world *w);
+/* Starts the run of `scn render`. Outside a launcher: a world of one, and MPI is not
+ * touched. Under one (Open MPI's mpirun, Slurm's srun): scn execs scn-mpi (next to scn,
+ * or in PKGLIBEXECDIR) with argv, the NULL-terminated argument vector for it ("scn-mpi",
+ * "render", the options), and scn-mpi starts MPI. Returns 0, or an exit status after a message (an MPI
+ * launcher but no scn-mpi). */
+int dist_start(char **argv, struct dist_world *w);
 
 /* Ends the run with exit status status (MPI_Finalize), after every process's last
  * message; a no-op for a world of one. */

@@ -2,7 +2,6 @@
  * a launcher scn becomes scn-mpi, or refuses when this build has none. */
 #include "config.h"
 
-#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,9 +28,8 @@ static void exec_scn_mpi(char **argv)
 	execv(PKGLIBEXECDIR "/scn-mpi", argv);
 }
 
-int dist_start(int argc, char **argv, struct dist_world *w)
+int dist_start(char **argv, struct dist_world *w)
 {
-	(void)argc;
 	*w = (struct dist_world){ 0, 1, "" };
 	const char *by = dist_launcher();
 	if (!by)

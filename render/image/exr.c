@@ -390,6 +390,8 @@ int image_exr_read(int fd, const char *path, struct image **out, struct image_ex
 	init.read_fn = read_fn;
 	init.size_fn = size_fn;
 	init.error_handler_fn = on_error;
+	if (hdr) /* empty, so that a failure before get_header frees nothing */
+		*hdr = (struct image_exr_header){ .nattrs = 0 };
 
 	exr_context_t ctx = NULL;
 	exr_decode_pipeline_t dec = EXR_DECODE_PIPELINE_INITIALIZER;
