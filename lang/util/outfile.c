@@ -75,7 +75,12 @@ int outfile_finish(int fd, char *tmp, const char *path, int rc, char *err, size_
 		char self[64];
 		snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
 		cleanup_register(tmp, false);
-		if (linkat(AT_FDCWD, self, AT_FDCWD, tmp, AT_SYMLINK_FOLLOW) != 0)
+		int linked = linkat(AT_FDCWD, self, AT_FDCWD, tmp, AT_SYMLINK_FOLLOW);
+		/* a file of that name, which holds this process's id, was left by a dead process
+		 * that had the same id: it is no one's */
+		if (linked != 0 && errno == EEXIST && unlink(tmp) == 0)
+			linked = linkat(AT_FDCWD, self, AT_FDCWD, tmp, AT_SYMLINK_FOLLOW);
+		if (linked != 0)
 			rc = errno;
 	}
 	if (close(fd) != 0 && rc == 0)

@@ -263,4 +263,11 @@ only_line "$work/err" "scn: warning: the scene has no lights and no material emi
 printf 'camera { resolution 8, 6 }\nsphere { <0, 0, 0>, 1  material { emit 1 } }\n' >glow.scn
 expect_status 0 "$SCN" render glow.scn -o glow.png -q
 only_line "$work/err" ""
+
+# a temporary file's name holds the process's id: one left by a dead process that had
+# this one's id is no one's, and does not stop the write (it failed with "File exists")
+sh -c 'echo stale >.scn-$$-0.tmp; exec "$0" render scene.scn -q -o stale.png' "$SCN" ||
+	fail "a stale temporary file of this process's id stopped the write"
+[ -s stale.png ] || fail "no stale.png"
+no_temp "a stale temporary file"
 finish
